@@ -1,0 +1,63 @@
+// backends.cpp: see backends.h.
+#include "app/backends.h"
+
+#include "app/provenance.h"
+#include "glsl/gl_renderer.h"
+#include "raster/cpu_renderer.h"
+
+namespace st {
+
+const char* backend_name(Backend b) { return b == Backend::Cpu ? "cpu" : "gl"; }
+
+Backends::Backends(int threads, std::string glsl_dir) : threads_(threads), glsl_dir_(std::move(glsl_dir)) {}
+Backends::~Backends() = default;
+
+CpuRenderer& Backends::cpu() {
+    if (!cpu_) cpu_ = std::make_unique<CpuRenderer>(threads_);
+    return *cpu_;
+}
+
+GlRenderer& Backends::gl() {
+    if (!gl_) gl_ = std::make_unique<GlRenderer>(glsl_dir_);
+    return *gl_;
+}
+
+std::string Backends::gl_renderer() { return gl().renderer(); }
+std::string Backends::gl_version() { return gl().version(); }
+
+Rendered Backends::render(Backend backend, const Frame& frame) {
+    Rendered out;
+    if (backend == Backend::Cpu) {
+        CpuRenderer& r = cpu();
+        r.prepare(frame);
+        const auto t0 = Clock::now();
+        r.execute();
+        out.ms = ms_between(t0, Clock::now());
+        out.stages = r.stage_times();
+        out.image = r.read_back();
+    } else {
+        GlRenderer& r = gl();
+        r.prepare(frame);
+        const auto t0 = Clock::now();
+        r.execute();
+        out.ms = ms_between(t0, Clock::now());
+        out.image = r.read_back();
+    }
+    return out;
+}
+
+Metadata Backends::provenance(Backend backend) {
+    Metadata m;
+    m["backend"] = backend_name(backend);
+    m["version"] = shadertwin_version();
+    m["cpu_flags"] = cpu_flags();
+    if (backend == Backend::Cpu) {
+        m["renderer"] = "shadertwin cpu rasterizer, " + std::to_string(cpu().threads()) + " threads";
+    } else {
+        m["renderer"] = gl_renderer();
+        m["gl_version"] = gl_version();
+    }
+    return m;
+}
+
+}  // namespace st

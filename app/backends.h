@@ -1,0 +1,50 @@
+// backends.h: the two ways to render a Frame, behind one call.
+// "cpu" is our rasterizer with the C++ twins; "gl" is the real GLSL on
+// llvmpipe. Each backend is created on first use and then kept.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "frame/frame.h"
+#include "image/image.h"
+#include "image/image_io.h"
+#include "raster/stage_times.h"
+
+namespace st {
+
+class CpuRenderer;
+class GlRenderer;
+
+enum class Backend { Cpu, Gl };
+const char* backend_name(Backend b);
+
+struct Rendered {
+    Image image;
+    double ms = 0;            // the frame's work, without preparation or read-back
+    StageTimes stages;        // CPU backend only
+};
+
+class Backends {
+public:
+    Backends(int threads, std::string glsl_dir);
+    ~Backends();
+
+    Rendered render(Backend backend, const Frame& frame);
+    // Provenance for EXR metadata of images from `backend`.
+    Metadata provenance(Backend backend);
+    // GL_RENDERER and GL_VERSION (creates the GL context if needed).
+    std::string gl_renderer();
+    std::string gl_version();
+
+    CpuRenderer& cpu();
+    GlRenderer& gl();
+
+private:
+    int threads_;
+    std::string glsl_dir_;
+    std::unique_ptr<CpuRenderer> cpu_;
+    std::unique_ptr<GlRenderer> gl_;
+};
+
+}  // namespace st

@@ -1,0 +1,118 @@
+// cmd_report.cpp: `report`, the main job. Every built-in scene on both
+// backends, compared; a Markdown summary on stdout and an HTML page with the
+// images, heat maps and metrics, failing scenes first.
+#include <algorithm>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "app/backends.h"
+#include "app/commands.h"
+#include "app/comparison.h"
+#include "app/provenance.h"
+#include "image/image_io.h"
+#include "scene/scene.h"
+
+namespace st {
+
+namespace {
+
+std::string fmt(double v, int precision = 6) {
+    std::ostringstream s;
+    s << std::setprecision(precision) << v;
+    return s.str();
+}
+
+std::string html_escape(const std::string& in) {
+    std::string out;
+    for (char ch : in) {
+        switch (ch) {
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += ch;
+        }
+    }
+    return out;
+}
+
+std::string markdown(const std::vector<SceneComparison>& results, const std::string& renderer) {
+    std::ostringstream md;
+    const auto failed = std::count_if(results.begin(), results.end(), [](auto& c) { return !c.pass(); });
+    md << "# shadertwin report\n\n"
+       << "shadertwin " << shadertwin_version() << "; reference: " << renderer << "; CPU flags: "
+       << cpu_flags() << "\n\n"
+       << results.size() - failed << " of " << results.size() << " scenes pass.\n\n"
+       << "| scene | result | coverage_mismatch | identical 8-bit | max_diff_8bit | identical float "
+          "| max_rel_diff_float | cpu ms | gl ms |\n"
+       << "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    for (const auto& c : results)
+        md << "| " << c.scene << " | " << (c.pass() ? "pass" : "**FAIL**") << " | " << c.coverage_mismatch
+           << " | " << fmt(c.metrics.identical_fraction_8bit) << " | " << c.metrics.max_diff_8bit << " | "
+           << fmt(c.metrics.identical_fraction_float) << " | " << fmt(c.metrics.max_rel_diff_float, 3)
+           << " | " << fmt(c.cpu_ms, 3) << " | " << fmt(c.gl_ms, 3) << " |\n";
+    for (const auto& c : results)
+        for (const auto& f : c.failures) md << "\n- " << c.scene << ": " << f;
+    md << "\n";
+    return md.str();
+}
+
+std::string html(const std::vector<SceneComparison>& results, const std::string& renderer) {
+    std::ostringstream h;
+    h << "<!doctype html><html><head><meta charset=\"utf-8\"><title>shadertwin report</title><style>"
+         "body{font-family:sans-serif;margin:2em}section{border-top:1px solid #ccc;padding:1em 0}"
+         "img{image-rendering:pixelated;width:256px;border:1px solid #888;margin-right:8px}"
+         ".fail{color:#b00}.pass{color:#070}td,th{padding:2px 8px;text-align:left}"
+         "</style></head><body><h1>shadertwin report</h1><p>shadertwin "
+      << html_escape(shadertwin_version()) << "; reference: " << html_escape(renderer)
+      << "; CPU flags: " << html_escape(cpu_flags())
+      << "</p><p>Heat maps: black = bit-identical floats, dark blue = floats differ but 8-bit "
+         "equal, green = 1 LSB, yellow = 2-3 LSB, red = 4+ LSB, white = non-finite.</p>";
+    for (const auto& c : results) {
+        h << "<section><h2>" << html_escape(c.scene) << " <span class=\"" << (c.pass() ? "pass\">pass" : "fail\">FAIL")
+          << "</span></h2>";
+        for (const auto& f : c.failures) h << "<p class=\"fail\">" << html_escape(f) << "</p>";
+        h << "<div><figure style=\"display:inline-block\"><img src=\"" << c.cpu_png
+          << "\"><figcaption>cpu</figcaption></figure><figure style=\"display:inline-block\"><img src=\""
+          << c.gl_png << "\"><figcaption>gl (llvmpipe)</figcaption></figure>"
+          << "<figure style=\"display:inline-block\"><img src=\"" << c.diff_png
+          << "\"><figcaption>difference</figcaption></figure><figure style=\"display:inline-block\"><img src=\""
+          << c.coverage_diff_png << "\"><figcaption>coverage difference</figcaption></figure></div><table>";
+        const nlohmann::json j = to_json(c);
+        for (const auto& [key, value] : j.items())
+            if (key != "failures" && key != "scene")
+                h << "<tr><th>" << html_escape(key) << "</th><td>" << html_escape(value.dump()) << "</td></tr>";
+        h << "</table></section>";
+    }
+    h << "</body></html>\n";
+    return h.str();
+}
+
+}  // namespace
+
+int cmd_report(const std::string& out_dir, const CommonOptions& common) {
+    std::vector<Scene> scenes;
+    for (const auto& n : builtin_scene_names()) scenes.push_back(load_scene(n, common.overrides));
+    std::error_code ec;
+    std::filesystem::create_directories(out_dir, ec);
+    if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
+
+    Backends backends(common.threads, glsl_dir());
+    std::vector<SceneComparison> results;
+    for (const Scene& s : scenes) {
+        std::cerr << "report: " << s.name << "\n";
+        results.push_back(compare_scene(s, backends, out_dir));
+    }
+    // Failures first, then by name.
+    std::stable_sort(results.begin(), results.end(),
+                     [](const SceneComparison& a, const SceneComparison& b) { return !a.pass() && b.pass(); });
+    const std::string renderer = backends.gl_renderer();
+    write_text_file(out_dir + "/index.html", html(results, renderer));
+    std::cout << markdown(results, renderer);
+    const bool all_pass = std::all_of(results.begin(), results.end(), [](auto& c) { return c.pass(); });
+    return all_pass ? 0 : 1;
+}
+
+}  // namespace st

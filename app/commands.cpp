@@ -1,0 +1,122 @@
+// commands.cpp: version, list, render, compare and diff.
+#include "app/commands.h"
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+
+#include "app/backends.h"
+#include "app/comparison.h"
+#include "app/provenance.h"
+#include "image/image_io.h"
+#include "scene/scene.h"
+
+#ifndef SHADERTWIN_GLSL_DIR
+#error "SHADERTWIN_GLSL_DIR must point at glsl/"
+#endif
+
+namespace st {
+
+std::string glsl_dir() { return SHADERTWIN_GLSL_DIR; }
+std::string golden_file() { return SHADERTWIN_GOLDEN_FILE; }
+
+namespace {
+
+// Loads every scene first, so that bad input fails before any file is written.
+std::vector<Scene> load_all(const std::vector<std::string>& names, const CommonOptions& common) {
+    std::vector<Scene> scenes;
+    for (const auto& n : names) scenes.push_back(load_scene(n, common.overrides));
+    return scenes;
+}
+
+void make_dir(const std::string& dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw std::runtime_error("cannot create folder " + dir + ": " + ec.message());
+}
+
+void print_human(const SceneComparison& c) {
+    std::cout << std::left << std::setw(28) << c.scene << (c.pass() ? " pass" : " FAIL")
+              << "  coverage_mismatch " << c.coverage_mismatch << "  identical_8bit "
+              << c.metrics.identical_fraction_8bit << "  max_diff_8bit " << c.metrics.max_diff_8bit
+              << "  identical_float " << c.metrics.identical_fraction_float << "  max_rel_diff_float "
+              << c.metrics.max_rel_diff_float << "\n";
+    for (const auto& f : c.failures) std::cout << "    " << f << "\n";
+}
+
+}  // namespace
+
+int cmd_version() {
+    Backends backends(1, glsl_dir());
+    const std::string renderer = backends.gl_renderer(), version = backends.gl_version();
+    std::cout << "shadertwin " << shadertwin_version() << "\n"
+              << "mesa " << mesa_version(version) << "\n"
+              << "llvm " << llvm_version(renderer) << "\n"
+              << "gl_renderer " << renderer << "\n"
+              << "gl_version " << version << "\n"
+              << "cpu_flags " << cpu_flags() << "\n";
+    return 0;
+}
+
+int cmd_list() {
+    for (const auto& name : builtin_scene_names()) std::cout << name << "\n";
+    return 0;
+}
+
+int cmd_render(const std::vector<std::string>& names, const std::string& backend_str,
+               const std::string& out_dir, const CommonOptions& common) {
+    const auto scenes = load_all(names, common);
+    make_dir(out_dir);
+    const Backend backend = backend_str == "gl" ? Backend::Gl : Backend::Cpu;
+    Backends backends(common.threads, glsl_dir());
+    for (const Scene& scene : scenes) {
+        const Rendered r = backends.render(backend, scene.frame);
+        write_rendered(out_dir, scene.name, backend, r.image, backends);
+        nlohmann::json j = {{"scene", scene.name},  {"backend", backend_name(backend)},
+                            {"width", r.image.width}, {"height", r.image.height},
+                            {"hash", pixel_hash(r.image)}, {"ms", r.ms}};
+        std::cout << j.dump() << std::endl;
+    }
+    return 0;
+}
+
+int cmd_compare(const std::vector<std::string>& names, const std::string& out_dir, bool json,
+                const CommonOptions& common) {
+    const auto scenes = load_all(names, common);
+    make_dir(out_dir);
+    Backends backends(common.threads, glsl_dir());
+    bool all_pass = true;
+    for (const Scene& scene : scenes) {
+        const SceneComparison c = compare_scene(scene, backends, out_dir);
+        all_pass &= c.pass();
+        if (json) std::cout << to_json(c).dump() << std::endl;
+        else print_human(c);
+    }
+    return all_pass ? 0 : 1;
+}
+
+int cmd_diff(const std::string& a_path, const std::string& b_path, const std::string& out_png, bool json) {
+    const Image a = read_image(a_path), b = read_image(b_path);
+    if (a.width != b.width || a.height != b.height)
+        throw std::runtime_error("images differ in size: " + a_path + " and " + b_path);
+    const CompareMetrics m = compare_images(a, b);
+    if (!out_png.empty()) {
+        const auto heat = heat_map(a, b);
+        write_png_bytes(out_png, a.width, a.height, 3, heat.data());
+    }
+    // Without a scene there are only the strict default criteria to check.
+    const auto failures = Criteria{}.failures(m, 0);
+    nlohmann::json j = metrics_json(m);
+    j["a"] = a_path;
+    j["b"] = b_path;
+    j["pass"] = failures.empty();
+    j["failures"] = failures;
+    if (json) {
+        std::cout << j.dump() << std::endl;
+    } else {
+        for (const auto& [key, value] : j.items()) std::cout << key << " " << value << "\n";
+    }
+    return failures.empty() ? 0 : 1;
+}
+
+}  // namespace st

@@ -1,0 +1,30 @@
+// commands.h: the subcommands of `shadertwin`. Each returns the process exit
+// code: 0 success, 1 a check failed, 2 an error (bad input among them).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace st {
+
+struct CommonOptions {
+    std::vector<std::string> overrides;  // --set PATH=VALUE
+    int threads = 2;                     // --threads N
+};
+
+int cmd_version();
+int cmd_list();
+int cmd_render(const std::vector<std::string>& scenes, const std::string& backend,
+               const std::string& out_dir, const CommonOptions& common);
+int cmd_compare(const std::vector<std::string>& scenes, const std::string& out_dir, bool json,
+                const CommonOptions& common);
+int cmd_diff(const std::string& a, const std::string& b, const std::string& out_png, bool json);
+int cmd_golden(const std::string& action, const std::vector<std::string>& scenes,
+               const CommonOptions& common);
+int cmd_report(const std::string& out_dir, const CommonOptions& common);
+
+// Where the GLSL sources and golden hashes live (set at build time).
+std::string glsl_dir();
+std::string golden_file();
+
+}  // namespace st

@@ -1,0 +1,72 @@
+// comparison.cpp: see comparison.h.
+#include "app/comparison.h"
+
+#include "image/image_io.h"
+
+namespace st {
+
+std::string write_rendered(const std::string& dir, const std::string& scene, Backend backend,
+                           const Image& image, Backends& backends) {
+    const std::string stem = scene + "." + backend_name(backend);
+    write_exr(dir + "/" + stem + ".exr", image, backends.provenance(backend));
+    write_png(dir + "/" + stem + ".png", image);
+    return stem + ".png";
+}
+
+SceneComparison compare_scene(const Scene& scene, Backends& backends, const std::string& out_dir) {
+    SceneComparison c;
+    c.scene = scene.name;
+    const Rendered cpu = backends.render(Backend::Cpu, scene.frame);
+    const Rendered gl = backends.render(Backend::Gl, scene.frame);
+    const Frame coverage = coverage_frame(scene.frame);
+    const Image cpu_cov = backends.render(Backend::Cpu, coverage).image;
+    const Image gl_cov = backends.render(Backend::Gl, coverage).image;
+
+    c.metrics = compare_images(cpu.image, gl.image);
+    c.coverage_mismatch = st::coverage_mismatch(cpu_cov, gl_cov);
+    c.failures = scene.criteria.failures(c.metrics, c.coverage_mismatch);
+    c.cpu_ms = cpu.ms;
+    c.gl_ms = gl.ms;
+    c.cpu_hash = pixel_hash(cpu.image);
+    c.gl_hash = pixel_hash(gl.image);
+
+    c.cpu_png = write_rendered(out_dir, scene.name, Backend::Cpu, cpu.image, backends);
+    c.gl_png = write_rendered(out_dir, scene.name, Backend::Gl, gl.image, backends);
+    c.diff_png = scene.name + ".diff.png";
+    const auto heat = heat_map(cpu.image, gl.image);
+    write_png_bytes(out_dir + "/" + c.diff_png, cpu.image.width, cpu.image.height, 3, heat.data());
+    c.coverage_diff_png = scene.name + ".coverage-diff.png";
+    const auto cov_heat = heat_map(cpu_cov, gl_cov);
+    write_png_bytes(out_dir + "/" + c.coverage_diff_png, cpu.image.width, cpu.image.height, 3,
+                    cov_heat.data());
+    return c;
+}
+
+nlohmann::json metrics_json(const CompareMetrics& m) {
+    return {{"width", m.width},
+            {"height", m.height},
+            {"identical_fraction_8bit", m.identical_fraction_8bit},
+            {"max_diff_8bit", m.max_diff_8bit},
+            {"identical_fraction_float", m.identical_fraction_float},
+            {"max_rel_diff_float", m.max_rel_diff_float},
+            {"max_abs_diff", m.max_abs_diff},
+            {"mean_abs_diff", m.mean_abs_diff},
+            {"rms_error", m.rms_error},
+            {"psnr", m.psnr},
+            {"nonfinite", m.nonfinite_a + m.nonfinite_b}};
+}
+
+nlohmann::json to_json(const SceneComparison& c) {
+    nlohmann::json j = {{"scene", c.scene},
+                        {"pass", c.pass()},
+                        {"coverage_mismatch", c.coverage_mismatch}};
+    j.update(metrics_json(c.metrics));
+    j["failures"] = c.failures;
+    j["cpu_ms"] = c.cpu_ms;
+    j["gl_ms"] = c.gl_ms;
+    j["cpu_hash"] = c.cpu_hash;
+    j["gl_hash"] = c.gl_hash;
+    return j;
+}
+
+}  // namespace st

@@ -1,0 +1,39 @@
+// comparison.h: one scene on both backends, its coverage pass on both, the
+// metrics against the scene's criteria, and the files written for it.
+// Shared by `compare` and `report`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "app/backends.h"
+#include "image/compare.h"
+#include "scene/scene.h"
+
+namespace st {
+
+struct SceneComparison {
+    std::string scene;
+    CompareMetrics metrics;
+    long coverage_mismatch = 0;
+    std::vector<std::string> failures;  // empty = pass
+    double cpu_ms = 0, gl_ms = 0;
+    std::string cpu_hash, gl_hash;
+    // File names relative to the output folder.
+    std::string cpu_png, gl_png, diff_png, coverage_diff_png;
+    bool pass() const { return failures.empty(); }
+};
+
+SceneComparison compare_scene(const Scene& scene, Backends& backends, const std::string& out_dir);
+
+nlohmann::json to_json(const SceneComparison& c);
+// The metrics as a JSON object (also used by `diff`).
+nlohmann::json metrics_json(const CompareMetrics& m);
+
+// Writes `<dir>/<scene>.<backend>.exr` and `.png`; returns the PNG's name.
+std::string write_rendered(const std::string& dir, const std::string& scene, Backend backend,
+                           const Image& image, Backends& backends);
+
+}  // namespace st

@@ -1,0 +1,86 @@
+// main.cpp: the command line (see README.md and docs/ for each command).
+// Errors of any kind print one line on stderr (plus the GL log after a
+// shader compile error) and exit 2.
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "app/commands.h"
+#include "scene/input_error.h"
+
+namespace {
+
+void add_common(CLI::App* cmd, st::CommonOptions& common) {
+    cmd->add_option("--set", common.overrides, "override a scene field: PATH=VALUE (repeatable)");
+    cmd->add_option("--threads", common.threads, "CPU worker threads")
+        ->check(CLI::Range(1, 256))
+        ->default_val(2);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"shadertwin: GLSL translucency shaders and their C++ twins, compared on the CPU"};
+    app.require_subcommand(0, 1);
+    bool version = false;
+    app.add_flag("--version", version, "versions of shadertwin, Mesa and LLVM, and CPU flags");
+
+    st::CommonOptions common;
+    std::vector<std::string> scenes;
+    std::string backend = "cpu", out_dir = "out", out_png, action;
+    bool json = false;
+    std::string diff_a, diff_b;
+
+    app.add_subcommand("list", "built-in scenes, one per line");
+
+    auto* render = app.add_subcommand("render", "render scenes on one backend");
+    render->add_option("scenes", scenes, "built-in scene names or .json paths")->required();
+    render->add_option("--backend", backend, "cpu or gl")->check(CLI::IsMember({"cpu", "gl"}));
+    render->add_option("--out", out_dir, "output folder");
+    add_common(render, common);
+
+    auto* compare = app.add_subcommand("compare", "render on both backends and compare");
+    compare->add_option("scenes", scenes, "built-in scene names or .json paths")->required();
+    compare->add_option("--out", out_dir, "output folder");
+    compare->add_flag("--json", json, "one JSON object per scene");
+    add_common(compare, common);
+
+    auto* diff = app.add_subcommand("diff", "compare two image files");
+    diff->add_option("a", diff_a, "first image (taken as the CPU side)")->required();
+    diff->add_option("b", diff_b, "second image (the reference)")->required();
+    diff->add_option("--out", out_png, "heat map PNG");
+    diff->add_flag("--json", json, "JSON output");
+
+    auto* golden = app.add_subcommand("golden", "check or update the committed CPU hashes");
+    golden->add_option("action", action, "check or update")->required()->check(CLI::IsMember({"check", "update"}));
+    golden->add_option("scenes", scenes, "scenes (default: every built-in scene)");
+    add_common(golden, common);
+
+    auto* report = app.add_subcommand("report", "every built-in scene on both backends, compared");
+    report->add_option("--out", out_dir, "output folder");
+    add_common(report, common);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "shadertwin: " << e.what() << "\n";
+        return 2;
+    }
+
+    try {
+        if (version) return st::cmd_version();
+        if (app.got_subcommand("list")) return st::cmd_list();
+        if (*render) return st::cmd_render(scenes, backend, out_dir, common);
+        if (*compare) return st::cmd_compare(scenes, out_dir, json, common);
+        if (*diff) return st::cmd_diff(diff_a, diff_b, out_png, json);
+        if (*golden) return st::cmd_golden(action, scenes, common);
+        if (*report) return st::cmd_report(out_dir, common);
+        std::cerr << "shadertwin: no command given (try --help)\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "shadertwin: " << e.what() << "\n";
+        return 2;
+    }
+}

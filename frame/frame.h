@@ -1,0 +1,94 @@
+// frame.h: one frame's work, described once and handed to both backends.
+//
+// A Frame is what a scene turns into before anything is drawn: passes, each
+// with a render target and an ordered list of draw calls, and each draw call
+// with its program name, vertices, uniforms, textures and fixed-function
+// state. The CPU rasterizer (raster/) and the GL host (glsl/) both consume
+// exactly this, so geometry, uniforms and draw order cannot drift apart.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+namespace st {
+
+// Vertex attributes are vec4 slots bound to GLSL locations 0..N-1, as
+// glVertexAttribPointer with 4 floats each; missing components are (0,0,0,1).
+struct VertexArray {
+    int attribute_count = 0;
+    std::vector<glm::vec4> data;  // vertex-major: data[v * attribute_count + a]
+    int vertex_count() const {
+        return attribute_count ? int(data.size()) / attribute_count : 0;
+    }
+    const glm::vec4* vertex(int v) const { return &data[size_t(v) * attribute_count]; }
+};
+
+enum class UniformType { Float, Vec2, Vec3, Vec4, Int, Mat4 };
+
+struct Uniform {
+    std::string name;
+    UniformType type = UniformType::Float;
+    std::array<float, 16> value{};  // Mat4 column-major, as glUniformMatrix4fv
+};
+
+enum class TextureFormat { RGBA8, RGBA32F };
+enum class TextureFilter { Nearest, Linear };
+enum class TextureWrap { Repeat, ClampToEdge };
+
+// A 2D texture. Texels are stored as floats whatever the format; for RGBA8
+// they hold k/255 exactly as uploaded, so both backends see the same bytes.
+struct Texture {
+    std::string sampler;  // GLSL sampler uniform name
+    TextureFormat format = TextureFormat::RGBA32F;
+    TextureFilter filter = TextureFilter::Linear;
+    TextureWrap wrap = TextureWrap::Repeat;
+    int width = 0, height = 0;
+    std::vector<uint8_t> texels8;   // RGBA8: width*height*4, row 0 = t near 0
+    std::vector<float> texels32;    // RGBA32F: width*height*4
+};
+
+enum class BlendMode {
+    None,
+    OneSrcAlpha,        // glBlendFunc(GL_ONE, GL_SRC_ALPHA): thin-slab Eq. 9
+    SrcAlphaOneMinusSrcAlpha,  // ordinary alpha blending
+};
+
+struct DrawState {
+    bool depth_test = false;   // GL_LESS against a 32-bit float depth buffer
+    bool depth_write = true;
+    BlendMode blend = BlendMode::None;
+};
+
+struct DrawCall {
+    // Program stages by name: glsl/<vertex>.vert and glsl/<fragment>.frag on
+    // the GL side, the twins registered under the same names in kernels/.
+    std::string vertex;
+    std::string fragment;
+    VertexArray vertices;
+    std::vector<uint32_t> indices;       // triangle list
+    std::vector<Uniform> uniforms;
+    std::vector<Texture> textures;       // bound to units 0..N-1 in order
+    DrawState state;
+};
+
+struct Pass {
+    int width = 0, height = 0;           // RGBA32F colour + 32F depth target
+    glm::vec4 clear_colour{0, 0, 0, 0};
+    float clear_depth = 1.0f;
+    std::vector<DrawCall> draws;
+};
+
+struct Frame {
+    std::vector<Pass> passes;            // the last pass's target is the image
+};
+
+// The coverage pass used by `compare`: every draw keeps its vertex stage but
+// gets the constant-colour fragment stage "coverage", no blending and no depth
+// test, so a pixel is non-zero exactly when some triangle covers it.
+Frame coverage_frame(const Frame& frame);
+
+}  // namespace st

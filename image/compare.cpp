@@ -1,0 +1,107 @@
+// compare.cpp: per-pixel equivalence metrics and the heat map.
+#include "image/compare.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include "image/unorm8.h"
+
+namespace st {
+
+namespace {
+
+void check_sizes(const Image& a, const Image& b) {
+    if (a.width != b.width || a.height != b.height)
+        throw std::invalid_argument("images differ in size: " + std::to_string(a.width) + "x" +
+                                    std::to_string(a.height) + " and " + std::to_string(b.width) +
+                                    "x" + std::to_string(b.height));
+}
+
+int diff_8bit(float a, float b) { return std::abs(int(to_unorm8(a)) - int(to_unorm8(b))); }
+
+}  // namespace
+
+CompareMetrics compare_images(const Image& a, const Image& b) {
+    check_sizes(a, b);
+    CompareMetrics m;
+    m.width = a.width;
+    m.height = a.height;
+    const size_t pixels = size_t(a.width) * a.height;
+    size_t same8 = 0, same_float = 0;
+    for (size_t p = 0; p < pixels; ++p) {
+        bool pixel_same8 = true, pixel_same_float = true;
+        for (int c = 0; c < 4; ++c) {
+            const float va = a.rgba[p * 4 + c], vb = b.rgba[p * 4 + c];
+            if (!std::isfinite(va)) ++m.nonfinite_a;
+            if (!std::isfinite(vb)) ++m.nonfinite_b;
+            const int d8 = diff_8bit(va, vb);
+            m.max_diff_8bit = std::max(m.max_diff_8bit, d8);
+            pixel_same8 &= d8 == 0;
+            pixel_same_float &= std::bit_cast<uint32_t>(va) == std::bit_cast<uint32_t>(vb);
+            const double rel = std::abs(double(va) - double(vb)) / std::max(std::abs(double(vb)), 1e-3);
+            // A NaN on either side makes the relative difference infinite.
+            m.max_rel_diff_float = std::max(m.max_rel_diff_float, std::isnan(rel) ? INFINITY : rel);
+        }
+        same8 += pixel_same8;
+        same_float += pixel_same_float;
+    }
+    m.identical_fraction_8bit = pixels ? double(same8) / pixels : 1.0;
+    m.identical_fraction_float = pixels ? double(same_float) / pixels : 1.0;
+
+    OIIO::ImageSpec spec(a.width, a.height, 4, OIIO::TypeDesc::FLOAT);
+    OIIO::ImageBuf ba(spec, const_cast<float*>(a.rgba.data()));
+    OIIO::ImageBuf bb(spec, const_cast<float*>(b.rgba.data()));
+    auto r = OIIO::ImageBufAlgo::compare(ba, bb, 0.0f, 0.0f);
+    m.max_abs_diff = r.maxerror;
+    m.mean_abs_diff = r.meanerror;
+    m.rms_error = r.rms_error;
+    m.psnr = r.PSNR;
+    return m;
+}
+
+long coverage_mismatch(const Image& a, const Image& b) {
+    check_sizes(a, b);
+    long mismatch = 0;
+    const size_t pixels = size_t(a.width) * a.height;
+    for (size_t p = 0; p < pixels; ++p) {
+        auto covered = [p](const Image& im) {
+            const float* v = &im.rgba[p * 4];
+            return v[0] != 0.0f || v[1] != 0.0f || v[2] != 0.0f || v[3] != 0.0f;
+        };
+        mismatch += covered(a) != covered(b);
+    }
+    return mismatch;
+}
+
+std::vector<uint8_t> heat_map(const Image& a, const Image& b) {
+    check_sizes(a, b);
+    const size_t pixels = size_t(a.width) * a.height;
+    std::vector<uint8_t> rgb(pixels * 3, 0);
+    for (size_t p = 0; p < pixels; ++p) {
+        int d8 = 0;
+        bool same_float = true, finite = true;
+        for (int c = 0; c < 4; ++c) {
+            const float va = a.rgba[p * 4 + c], vb = b.rgba[p * 4 + c];
+            finite &= std::isfinite(va) && std::isfinite(vb);
+            same_float &= std::bit_cast<uint32_t>(va) == std::bit_cast<uint32_t>(vb);
+            d8 = std::max(d8, diff_8bit(va, vb));
+        }
+        uint8_t* out = &rgb[p * 3];
+        auto set = [out](uint8_t r, uint8_t g, uint8_t bl) { out[0] = r; out[1] = g; out[2] = bl; };
+        if (!finite) set(255, 255, 255);
+        else if (same_float) set(0, 0, 0);
+        else if (d8 == 0) set(0, 0, 110);
+        else if (d8 == 1) set(0, 200, 0);
+        else if (d8 <= 3) set(230, 230, 0);
+        else set(255, 0, 0);
+    }
+    return rgb;
+}
+
+}  // namespace st

@@ -1,0 +1,34 @@
+// compare.h: the equivalence metrics between a CPU image and a GL image.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "image/image.h"
+
+namespace st {
+
+struct CompareMetrics {
+    int width = 0, height = 0;
+    double identical_fraction_8bit = 0;   // pixels whose four unorm8 channels are equal
+    int max_diff_8bit = 0;                // LSB, over all channels
+    double identical_fraction_float = 0;  // pixels whose four floats are bit-identical
+    double max_rel_diff_float = 0;        // max |a - b| / max(|b|, 1e-3)
+    // From OpenImageIO's ImageBufAlgo::compare, on the float images.
+    double max_abs_diff = 0, mean_abs_diff = 0, rms_error = 0, psnr = 0;
+    long nonfinite_a = 0, nonfinite_b = 0;  // NaN or infinite channels
+};
+
+// `b` is the reference (GL) in max_rel_diff_float. Sizes must match
+// (std::invalid_argument otherwise).
+CompareMetrics compare_images(const Image& a, const Image& b);
+
+// Pixels covered (any channel non-zero) in exactly one of two coverage images.
+long coverage_mismatch(const Image& a, const Image& b);
+
+// RGB heat map of the per-pixel difference, rows top to bottom:
+// black = bit-identical floats, dark blue = floats differ but 8-bit equal,
+// green = 1 LSB, yellow = 2-3 LSB, red = 4 LSB or more, white = non-finite.
+std::vector<uint8_t> heat_map(const Image& a, const Image& b);
+
+}  // namespace st

@@ -1,0 +1,30 @@
+// image_io.h: EXR and PNG files through OpenImageIO, written atomically.
+//
+// Every writer renders to a temporary name beside the target and renames it
+// into place, so an error never leaves a half-written file.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "image/image.h"
+
+namespace st {
+
+using Metadata = std::map<std::string, std::string>;
+
+// Float RGBA EXR with the metadata as string attributes (provenance).
+void write_exr(const std::string& path, const Image& image, const Metadata& metadata);
+// 8-bit RGBA PNG holding to_unorm8() of each channel, as is.
+void write_png(const std::string& path, const Image& image);
+// An 8-bit RGB(A) PNG from bytes already converted (heat maps).
+void write_png_bytes(const std::string& path, int width, int height, int channels,
+                     const unsigned char* bytes);
+// Reads any image OpenImageIO reads as float RGBA (missing alpha = 1).
+// Throws std::runtime_error with one line on failure.
+Image read_image(const std::string& path, Metadata* metadata = nullptr);
+
+// Writes text through a temporary file and rename.
+void write_text_file(const std::string& path, const std::string& text);
+
+}  // namespace st

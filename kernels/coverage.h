@@ -1,0 +1,13 @@
+// coverage.h: twin of glsl/coverage.frag.
+#pragma once
+
+#include "kernels/program.h"
+
+namespace st {
+
+class CoverageFragment final : public ScalarFragmentTwin<CoverageFragment> {
+public:
+    glm::vec4 main(const Fragment&) const { return glm::vec4(1.0f); }
+};
+
+}  // namespace st

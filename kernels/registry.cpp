@@ -1,0 +1,56 @@
+// registry.cpp: the one list of twins. Adding a technique adds lines here
+// (see docs/adding-a-technique.md).
+#include "kernels/registry.h"
+
+#include <functional>
+#include <map>
+
+#include "kernels/coverage.h"
+#include "kernels/interp.h"
+
+namespace st {
+
+namespace {
+
+template <class T> using Factory = std::function<std::unique_ptr<T>()>;
+
+const std::map<std::string, Factory<VertexTwin>>& vertex_twins() {
+    static const std::map<std::string, Factory<VertexTwin>> twins = {
+        {"interp", [] { return std::make_unique<InterpVertex>(); }},
+    };
+    return twins;
+}
+
+const std::map<std::string, Factory<FragmentTwin>>& fragment_twins() {
+    static const std::map<std::string, Factory<FragmentTwin>> twins = {
+        {"interp", [] { return std::make_unique<InterpFragment>(); }},
+        {"coverage", [] { return std::make_unique<CoverageFragment>(); }},
+    };
+    return twins;
+}
+
+template <class T>
+std::unique_ptr<T> make(const std::map<std::string, Factory<T>>& table, const std::string& name) {
+    auto it = table.find(name);
+    return it == table.end() ? nullptr : it->second();
+}
+
+template <class T>
+std::vector<std::string> names(const std::map<std::string, Factory<T>>& table) {
+    std::vector<std::string> out;
+    for (const auto& [name, factory] : table) out.push_back(name);
+    return out;
+}
+
+}  // namespace
+
+std::unique_ptr<VertexTwin> make_vertex_twin(const std::string& name) {
+    return make(vertex_twins(), name);
+}
+std::unique_ptr<FragmentTwin> make_fragment_twin(const std::string& name) {
+    return make(fragment_twins(), name);
+}
+std::vector<std::string> vertex_twin_names() { return names(vertex_twins()); }
+std::vector<std::string> fragment_twin_names() { return names(fragment_twins()); }
+
+}  // namespace st

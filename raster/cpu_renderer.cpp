@@ -1,0 +1,241 @@
+// cpu_renderer.cpp: the CPU frame loop (see cpu_renderer.h for the flow).
+#include "raster/cpu_renderer.h"
+
+#include <algorithm>
+#include <deque>
+#include <stdexcept>
+
+#include "kernels/registry.h"
+#include "raster/clipper.h"
+#include "raster/fragment_inputs.h"
+#include "raster/framebuffer.h"
+#include "raster/output_merge.h"
+#include "raster/sampler2d.h"
+#include "raster/tile_raster.h"
+#include "raster/triangle_setup.h"
+#include "raster/viewport.h"
+#include "raster/worker_pool.h"
+
+namespace st {
+
+namespace {
+
+constexpr int kVertexChunk = 1024;
+
+struct PreparedDraw {
+    const DrawCall* call = nullptr;
+    std::unique_ptr<VertexTwin> vertex;
+    std::unique_ptr<FragmentTwin> fragment;
+    std::deque<Sampler2D> samplers;  // deque: Bindings keeps pointers
+    Bindings bindings;
+    int varying_count = 0;
+    std::vector<VertexOut> shaded;        // vertex stage output, per vertex
+    std::vector<WindowPos> window;        // viewport transform of `shaded`
+};
+
+// Per-worker scratch, so the tile phase allocates nothing once warm.
+struct WorkerScratch {
+    std::vector<QuadCoverage> quads;
+    std::vector<FragmentQuad> inputs;
+    std::vector<FragmentOut> outputs;
+    StageTimes times;
+};
+
+}  // namespace
+
+struct CpuRenderer::Impl {
+    explicit Impl(int threads) : pool(threads), scratch(size_t(threads)) {}
+
+    WorkerPool pool;
+    std::vector<WorkerScratch> scratch;
+    Frame frame;
+    std::vector<std::vector<PreparedDraw>> passes;  // [pass][draw]
+    std::unique_ptr<Framebuffer> result;
+
+    // Per-pass setup output, reused across passes and frames.
+    std::vector<SetupTriangle> triangles;
+    std::vector<Plane> planes;
+    std::vector<std::vector<uint32_t>> bins;
+    std::deque<VertexOut> clipped;  // vertices made by clipping (stable addresses)
+
+    void run_vertex_stage(PreparedDraw& draw, const Viewport& viewport);
+    void setup_and_bin(std::vector<PreparedDraw>& draws, const Pass& pass, const Viewport& viewport);
+    void shade_tile(int tile, int worker, std::vector<PreparedDraw>& draws, const Pass& pass,
+                    Framebuffer& fb);
+};
+
+CpuRenderer::CpuRenderer(int threads) {
+    if (threads < 1) throw std::invalid_argument("thread count must be at least 1");
+    impl_ = std::make_unique<Impl>(threads);
+}
+
+CpuRenderer::~CpuRenderer() = default;
+
+int CpuRenderer::threads() const { return impl_->pool.size(); }
+
+void CpuRenderer::prepare(const Frame& frame) {
+    impl_->frame = frame;
+    impl_->passes.clear();
+    for (const Pass& pass : impl_->frame.passes) {
+        auto& draws = impl_->passes.emplace_back();
+        for (const DrawCall& call : pass.draws) {
+            PreparedDraw& d = draws.emplace_back();
+            d.call = &call;
+            d.vertex = make_vertex_twin(call.vertex);
+            if (!d.vertex) throw std::runtime_error("no C++ twin for vertex program '" + call.vertex + "'");
+            d.fragment = make_fragment_twin(call.fragment);
+            if (!d.fragment)
+                throw std::runtime_error("no C++ twin for fragment program '" + call.fragment + "'");
+            d.bindings.uniforms = &call.uniforms;
+            for (const Texture& t : call.textures) {
+                d.bindings.samplers.push_back(&d.samplers.emplace_back(t));
+                d.bindings.sampler_names.push_back(t.sampler);
+            }
+            d.vertex->bind(d.bindings);
+            d.fragment->bind(d.bindings);
+            d.varying_count = d.vertex->varying_count();
+        }
+    }
+}
+
+void CpuRenderer::Impl::run_vertex_stage(PreparedDraw& d, const Viewport& viewport) {
+    const VertexArray& va = d.call->vertices;
+    const int n = va.vertex_count();
+    d.shaded.resize(size_t(n));
+    d.window.resize(size_t(n));
+    pool.run((n + kVertexChunk - 1) / kVertexChunk, [&](int chunk, int) {
+        const int end = std::min(n, (chunk + 1) * kVertexChunk);
+        for (int v = chunk * kVertexChunk; v < end; ++v) {
+            d.vertex->run(va.vertex(v), d.shaded[size_t(v)]);
+            d.window[size_t(v)] = to_window(d.shaded[size_t(v)].position, viewport);
+        }
+    });
+}
+
+void CpuRenderer::Impl::setup_and_bin(std::vector<PreparedDraw>& draws, const Pass& pass,
+                                      const Viewport& viewport) {
+    triangles.clear();
+    planes.clear();
+    clipped.clear();
+    const int tiles_x = (pass.width + kTileSize - 1) / kTileSize;
+    const int tiles_y = (pass.height + kTileSize - 1) / kTileSize;
+    bins.resize(size_t(tiles_x) * tiles_y);
+    for (auto& bin : bins) bin.clear();
+
+    auto emit = [&](const SetupVertex& a, const SetupVertex& b, const SetupVertex& c, uint32_t draw,
+                    int varying_count) {
+        SetupTriangle tri;
+        if (!setup_triangle(a, b, c, varying_count, pass.width, pass.height, tri, planes)) return;
+        tri.draw = draw;
+        const auto index = uint32_t(triangles.size());
+        triangles.push_back(tri);
+        for (int ty = tri.y_min / kTileSize; ty <= tri.y_max / kTileSize; ++ty)
+            for (int tx = tri.x_min / kTileSize; tx <= tri.x_max / kTileSize; ++tx)
+                bins[size_t(ty) * tiles_x + tx].push_back(index);
+    };
+
+    std::vector<VertexOut> polygon;
+    for (uint32_t di = 0; di < draws.size(); ++di) {
+        PreparedDraw& d = draws[di];
+        const auto& idx = d.call->indices;
+        for (size_t t = 0; t + 2 < idx.size(); t += 3) {
+            const uint32_t i[3] = {idx[t], idx[t + 1], idx[t + 2]};
+            const bool needs_clip = outside_near_far(d.shaded[i[0]].position) ||
+                                    outside_near_far(d.shaded[i[1]].position) ||
+                                    outside_near_far(d.shaded[i[2]].position);
+            if (!needs_clip) {
+                SetupVertex sv[3];
+                for (int k = 0; k < 3; ++k) sv[k] = {d.window[i[k]], d.shaded[i[k]].varyings.data()};
+                emit(sv[0], sv[1], sv[2], di, d.varying_count);
+                continue;
+            }
+            clip_near_far(d.shaded[i[0]], d.shaded[i[1]], d.shaded[i[2]], d.varying_count, polygon);
+            std::vector<SetupVertex> sv;
+            for (const VertexOut& v : polygon) {
+                const VertexOut& kept = clipped.emplace_back(v);
+                sv.push_back({to_window(kept.position, viewport), kept.varyings.data()});
+            }
+            for (size_t k = 1; k + 1 < sv.size(); ++k) emit(sv[0], sv[k], sv[k + 1], di, d.varying_count);
+        }
+    }
+}
+
+void CpuRenderer::Impl::shade_tile(int tile, int worker, std::vector<PreparedDraw>& draws,
+                                   const Pass& pass, Framebuffer& fb) {
+    WorkerScratch& s = scratch[size_t(worker)];
+    const int tiles_x = (pass.width + kTileSize - 1) / kTileSize;
+    const TileRect rect{(tile % tiles_x) * kTileSize, (tile / tiles_x) * kTileSize,
+                        std::min(pass.width, (tile % tiles_x + 1) * kTileSize),
+                        std::min(pass.height, (tile / tiles_x + 1) * kTileSize)};
+    for (uint32_t index : bins[size_t(tile)]) {
+        const SetupTriangle& tri = triangles[index];
+        const PreparedDraw& d = draws[tri.draw];
+        const auto t0 = Clock::now();
+        s.quads.clear();
+        rasterize_in_tile(tri, rect, s.quads);
+        const auto t1 = Clock::now();
+
+        s.inputs.resize(s.quads.size());
+        s.outputs.resize(s.quads.size());
+        const Plane* tri_planes = &planes[tri.first_plane];
+        for (size_t q = 0; q < s.quads.size(); ++q) {
+            interpolate_quad(tri_planes, d.varying_count, s.quads[q], tri.front_facing, s.inputs[q]);
+            s.outputs[q].discard_mask = 0;
+            d.fragment->shade(s.inputs[q], s.outputs[q]);
+        }
+        const auto t2 = Clock::now();
+
+        const DrawState& state = d.call->state;
+        for (size_t q = 0; q < s.quads.size(); ++q) {
+            const unsigned live = s.quads[q].mask & ~s.outputs[q].discard_mask;
+            for (int lane = 0; lane < 4; ++lane) {
+                if (!(live >> lane & 1)) continue;
+                const size_t p = fb.index(s.quads[q].x + (lane & 1), s.quads[q].y + (lane >> 1));
+                if (!depth_test(state, s.inputs[q].frag_coord[lane].z, fb.depth[p])) continue;
+                fb.colour[p] = blend(state.blend, s.outputs[q].colour[lane], fb.colour[p]);
+            }
+        }
+        const auto t3 = Clock::now();
+        s.times.raster_ms += ms_between(t0, t1);
+        s.times.fragment_ms += ms_between(t1, t2);
+        s.times.output_ms += ms_between(t2, t3);
+    }
+}
+
+void CpuRenderer::execute() {
+    Impl& m = *impl_;
+    times_ = StageTimes{};
+    for (size_t pi = 0; pi < m.frame.passes.size(); ++pi) {
+        const Pass& pass = m.frame.passes[pi];
+        auto& draws = m.passes[pi];
+        const Viewport viewport{0, 0, float(pass.width), float(pass.height), 0, 1};
+        m.result = std::make_unique<Framebuffer>(pass.width, pass.height, pass.clear_colour,
+                                                 pass.clear_depth);
+        const auto t0 = Clock::now();
+        for (PreparedDraw& d : draws) m.run_vertex_stage(d, viewport);
+        const auto t1 = Clock::now();
+        m.setup_and_bin(draws, pass, viewport);
+        const auto t2 = Clock::now();
+        for (auto& s : m.scratch) s.times = StageTimes{};
+        m.pool.run(int(m.bins.size()),
+                   [&](int tile, int worker) { m.shade_tile(tile, worker, draws, pass, *m.result); });
+        const auto t3 = Clock::now();
+
+        StageTimes tiles;
+        for (const auto& s : m.scratch) tiles += s.times;
+        const double tile_wall = ms_between(t2, t3), tile_cpu = tiles.total_ms();
+        const double scale = tile_cpu > 0 ? tile_wall / tile_cpu : 0.0;
+        times_.vertex_ms += ms_between(t0, t1);
+        times_.setup_ms += ms_between(t1, t2);
+        times_.raster_ms += tiles.raster_ms * scale;
+        times_.fragment_ms += tiles.fragment_ms * scale;
+        times_.output_ms += tiles.output_ms * scale;
+    }
+}
+
+Image CpuRenderer::read_back() const {
+    if (!impl_->result) throw std::runtime_error("CPU: nothing rendered");
+    return impl_->result->to_image();
+}
+
+}  // namespace st

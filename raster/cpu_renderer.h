@@ -1,0 +1,48 @@
+// cpu_renderer.h: the CPU backend. Runs a Frame through the C++ twins on the
+// tile-based rasterizer and returns a bit-stable float image.
+//
+// Per pass: vertex stage (twins, in parallel over vertex ranges) ->
+// primitive assembly, near/far clipping, setup and binning into 64x64 tiles
+// (in draw order) -> per tile, in parallel: for each binned triangle in
+// order, rasterize its quads, shade them, depth-test and blend. A tile is
+// only ever touched by one worker and sees triangles in submission order, so
+// the image cannot depend on the thread count.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "frame/frame.h"
+#include "image/image.h"
+#include "raster/stage_times.h"
+
+namespace st {
+
+class CpuRenderer {
+public:
+    explicit CpuRenderer(int threads);
+    ~CpuRenderer();
+
+    // Resolves twins and builds samplers. Throws std::runtime_error naming
+    // the program or uniform that is missing.
+    void prepare(const Frame& frame);
+    // Renders every pass; stage_times() then holds this frame's breakdown.
+    void execute();
+    Image read_back() const;
+
+    Image render(const Frame& frame) {
+        prepare(frame);
+        execute();
+        return read_back();
+    }
+
+    const StageTimes& stage_times() const { return times_; }
+    int threads() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+    StageTimes times_;
+};
+
+}  // namespace st

@@ -1,0 +1,32 @@
+// sampler2d.h: a 2D texture as the CPU twins sample it, filtered the way
+// llvmpipe filters it (see sampler2d.cpp for the arithmetic of each path).
+#pragma once
+
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+#include "frame/frame.h"
+
+namespace st {
+
+class Sampler2D {
+public:
+    explicit Sampler2D(const Texture& texture) : tex_(&texture) {}
+
+    // GLSL texture(sampler2D, vec2) without mipmaps.
+    glm::vec4 sample(const glm::vec2& st) const;
+    // GLSL texelFetch(sampler2D, ivec2, 0); out-of-range texels return 0.
+    glm::vec4 fetch(int x, int y) const;
+
+    int width() const { return tex_->width; }
+    int height() const { return tex_->height; }
+
+private:
+    glm::vec4 sample_nearest(const glm::vec2& st) const;
+    glm::vec4 sample_linear_float(const glm::vec2& st) const;
+    glm::vec4 sample_linear_unorm8(const glm::vec2& st) const;
+
+    const Texture* tex_;
+};
+
+}  // namespace st

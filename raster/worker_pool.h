@@ -1,0 +1,40 @@
+// worker_pool.h: a fixed set of threads that run indexed jobs.
+//
+// run(n, job) calls job(i, worker) once for every i in [0, n) and returns when
+// all are done. Which worker runs which index is not fixed, so a job must
+// write only to state owned by its index (a tile, a vertex range): that is
+// what keeps images independent of thread count and scheduling.
+#pragma once
+
+#include <condition_variable>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace st {
+
+class WorkerPool {
+public:
+    explicit WorkerPool(int threads);
+    ~WorkerPool();
+    WorkerPool(const WorkerPool&) = delete;
+    WorkerPool& operator=(const WorkerPool&) = delete;
+
+    int size() const { return int(threads_.size()) + 1; }  // the caller works too
+    void run(int count, const std::function<void(int index, int worker)>& job);
+
+private:
+    void work(int worker);
+    void drain(int worker);
+
+    std::vector<std::thread> threads_;
+    std::mutex mutex_;
+    std::condition_variable wake_, done_;
+    const std::function<void(int, int)>* job_ = nullptr;
+    int count_ = 0, next_ = 0, busy_ = 0;
+    unsigned generation_ = 0;
+    bool stop_ = false;
+};
+
+}  // namespace st

@@ -1,0 +1,38 @@
+// criteria.cpp: see criteria.h.
+#include "scene/criteria.h"
+
+#include <sstream>
+
+namespace st {
+
+Criteria Criteria::read(JsonReader& scene) {
+    Criteria c;
+    auto r = scene.object_if("criteria");
+    if (!r) return c;
+    c.coverage_mismatch = r->integer_or("coverage_mismatch", 0, 0, 1 << 30);
+    c.max_diff_8bit = r->integer_or("max_diff_8bit", c.max_diff_8bit, 0, 255);
+    c.max_rel_diff_float = r->number_or("max_rel_diff_float", c.max_rel_diff_float, 0, 1e30);
+    c.min_identical_fraction_8bit = r->number_or("min_identical_fraction_8bit", 0.0, 0.0, 1.0);
+    c.rationale = r->string_or("rationale", "");
+    r->finish();
+    return c;
+}
+
+std::vector<std::string> Criteria::failures(const CompareMetrics& m, long coverage) const {
+    std::vector<std::string> out;
+    auto fail = [&](const std::string& what, auto got, auto limit) {
+        std::ostringstream s;
+        s << what << " " << got << " (limit " << limit << ")";
+        out.push_back(s.str());
+    };
+    if (coverage > coverage_mismatch) fail("coverage_mismatch", coverage, coverage_mismatch);
+    if (m.max_diff_8bit > max_diff_8bit) fail("max_diff_8bit", m.max_diff_8bit, max_diff_8bit);
+    if (!(m.max_rel_diff_float <= max_rel_diff_float))
+        fail("max_rel_diff_float", m.max_rel_diff_float, max_rel_diff_float);
+    if (m.identical_fraction_8bit < min_identical_fraction_8bit)
+        fail("identical_fraction_8bit", m.identical_fraction_8bit, min_identical_fraction_8bit);
+    if (m.nonfinite_a || m.nonfinite_b) fail("non-finite channels", m.nonfinite_a + m.nonfinite_b, 0);
+    return out;
+}
+
+}  // namespace st

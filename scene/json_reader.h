@@ -1,0 +1,57 @@
+// json_reader.h: strict, typed reading of a JSON object.
+//
+// Every accessor checks type and range and names the offending field by its
+// dotted path ("triangles.2.colours.0"); finish() rejects fields nobody read,
+// so a typo in a scene file is an error, not a silent default.
+#pragma once
+
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace st {
+
+class JsonReader {
+public:
+    JsonReader(const nlohmann::json& object, std::string path);
+
+    bool has(const std::string& key) const;
+    double number(const std::string& key, double lo, double hi);
+    double number_or(const std::string& key, double fallback, double lo, double hi);
+    int integer(const std::string& key, int lo, int hi);
+    int integer_or(const std::string& key, int fallback, int lo, int hi);
+    bool boolean_or(const std::string& key, bool fallback);
+    std::string string(const std::string& key);
+    std::string string_or(const std::string& key, const std::string& fallback);
+    // One of `allowed`.
+    std::string choice_or(const std::string& key, const std::string& fallback,
+                          const std::vector<std::string>& allowed);
+    // An array of numbers of length in [min_len, max_len], each in [lo, hi].
+    std::vector<double> numbers(const std::string& key, size_t min_len, size_t max_len, double lo,
+                                double hi);
+    JsonReader object(const std::string& key);
+    std::optional<JsonReader> object_if(const std::string& key);
+    std::vector<JsonReader> objects(const std::string& key, size_t min_len, size_t max_len);
+    // The raw array at `key` (marked as read), for arrays of arrays.
+    const nlohmann::json& array(const std::string& key, size_t min_len, size_t max_len);
+
+    // Throws InputError naming the first field that was never read.
+    void finish() const;
+
+    const std::string& path() const { return path_; }
+    std::string field(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+    // Checks a JSON value is a finite number in [lo, hi]; `where` names it.
+    static double checked_number(const nlohmann::json& v, const std::string& where, double lo, double hi);
+
+private:
+    const nlohmann::json& get(const std::string& key);
+    const nlohmann::json& object_;
+    std::string path_;
+    std::set<std::string> read_;
+};
+
+}  // namespace st

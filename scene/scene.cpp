@@ -1,0 +1,108 @@
+// scene.cpp: scene files to Frames (see scene.h).
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "scene/input_error.h"
+#include "scene/json_reader.h"
+#include "scene/scene_kinds.h"
+
+#ifndef SHADERTWIN_SCENE_DIR
+#error "SHADERTWIN_SCENE_DIR must point at scenes/"
+#endif
+
+namespace st {
+
+namespace fs = std::filesystem;
+
+// Resolution bounds: a zero-sized target is meaningless, and past 8192 a
+// single RGBA32F target alone passes half a gigabyte.
+constexpr int kMaxResolution = 8192;
+
+const std::map<std::string, SceneBuilder>& scene_builders() {
+    static const std::map<std::string, SceneBuilder> builders = {
+        {"triangles", build_triangles_scene},
+    };
+    return builders;
+}
+
+std::string builtin_scene_dir() { return SHADERTWIN_SCENE_DIR; }
+
+std::vector<std::string> builtin_scene_names() {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(builtin_scene_dir()))
+        if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+void apply_override(nlohmann::json& document, const std::string& assignment) {
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw InputError("--set expects PATH=VALUE, got '" + assignment + "'");
+    const std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+    nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
+    if (value.is_discarded()) value = text;
+
+    nlohmann::json* node = &document;
+    size_t start = 0;
+    for (;;) {
+        const size_t dot = path.find('.', start);
+        const std::string key = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+        const bool last = dot == std::string::npos;
+        if (key.empty()) throw InputError("--set: empty segment in '" + path + "'");
+        if (node->is_array()) {
+            if (!std::all_of(key.begin(), key.end(), ::isdigit))
+                throw InputError("--set: '" + key + "' in '" + path + "' must be an array index");
+            const size_t i = std::stoul(key);
+            if (i >= node->size()) throw InputError("--set: index " + key + " out of range in '" + path + "'");
+            node = &(*node)[i];
+        } else if (node->is_object()) {
+            if (!last && !node->contains(key))
+                throw InputError("--set: no field '" + path.substr(0, dot) + "' in the scene");
+            node = &(*node)[key];
+        } else {
+            throw InputError("--set: '" + path.substr(0, start - 1) + "' has no fields");
+        }
+        if (last) break;
+        start = dot + 1;
+    }
+    *node = value;
+}
+
+Scene load_scene(const std::string& name_or_path, const std::vector<std::string>& overrides) {
+    fs::path path = name_or_path;
+    const bool is_path = name_or_path.find('/') != std::string::npos ||
+                         path.extension() == ".json";
+    if (!is_path) path = fs::path(builtin_scene_dir()) / (name_or_path + ".json");
+    std::ifstream in(path);
+    if (!in) {
+        if (is_path) throw InputError("cannot read scene file " + path.string());
+        throw InputError("unknown scene '" + name_or_path + "' (shadertwin list shows the built-in ones)");
+    }
+    Scene scene;
+    scene.name = path.stem().string();
+    scene.document = nlohmann::json::parse(in, nullptr, false);
+    if (scene.document.is_discarded()) throw InputError(path.string() + ": malformed JSON");
+    if (!scene.document.is_object()) throw InputError(path.string() + ": a scene must be a JSON object");
+    for (const std::string& o : overrides) apply_override(scene.document, o);
+
+    try {
+        JsonReader r(scene.document, "");
+        scene.kind = r.string("kind");
+        scene.description = r.string_or("description", "");
+        const SceneSize size{r.integer("width", 1, kMaxResolution), r.integer("height", 1, kMaxResolution)};
+        scene.criteria = Criteria::read(r);
+        auto builder = scene_builders().find(scene.kind);
+        if (builder == scene_builders().end()) throw InputError("unknown scene kind '" + scene.kind + "'");
+        scene.frame = builder->second(r, size);
+        r.finish();
+    } catch (const InputError& e) {
+        throw InputError(path.string() + ": " + e.what());
+    }
+    return scene;
+}
+
+}  // namespace st

@@ -1,0 +1,38 @@
+// scene.h: loading a scene file (built-in name or path), applying --set
+// overrides, validating it and turning it into a Frame. Schema:
+// docs/scenes.md.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "frame/frame.h"
+#include "scene/criteria.h"
+
+namespace st {
+
+struct Scene {
+    std::string name;         // built-in name, or the file's stem
+    std::string kind;         // "triangles", ...
+    std::string description;
+    nlohmann::json document;  // after overrides
+    Criteria criteria;
+    Frame frame;
+};
+
+// Throws InputError with one line on any problem: unknown scene, malformed
+// JSON, unknown/missing/mistyped field, out-of-range value, bad override.
+Scene load_scene(const std::string& name_or_path, const std::vector<std::string>& overrides);
+
+std::vector<std::string> builtin_scene_names();
+std::string builtin_scene_dir();
+
+// Applies "dotted.path=value" to a document: the value is parsed as JSON when
+// it parses (numbers, booleans, arrays), else taken as a string. The parent
+// of the last segment must exist; the field itself may be new (validation
+// then rejects names the schema does not know).
+void apply_override(nlohmann::json& document, const std::string& assignment);
+
+}  // namespace st

@@ -1,0 +1,26 @@
+// scene_kinds.h: one builder per kind of scene. A builder reads its own
+// fields from the scene object (the common ones, kind/description/width/
+// height/criteria, are read by load_scene) and fills the frame.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <string>
+
+#include "frame/frame.h"
+#include "scene/json_reader.h"
+
+namespace st {
+
+struct SceneSize {
+    int width, height;
+};
+
+using SceneBuilder = std::function<Frame(JsonReader& scene, SceneSize size)>;
+
+// kind name -> builder
+const std::map<std::string, SceneBuilder>& scene_builders();
+
+Frame build_triangles_scene(JsonReader& scene, SceneSize size);
+
+}  // namespace st

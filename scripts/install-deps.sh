@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian packages shadertwin builds with, when any is missing.
+# Skips apt entirely when everything is already there.
+set -euo pipefail
+packages=(
+  build-essential cmake pkg-config
+  libglm-dev libopenimageio-dev openimageio-tools libopenexr-dev
+  libgtest-dev libbenchmark-dev libosmesa6-dev
+  nlohmann-json3-dev libcli11-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ "${#missing[@]}" -eq 0 ]; then
+  exit 0
+fi
+echo "installing: ${missing[*]}" >&2
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
