@@ -1,52 +1,117 @@
-// clipper.cpp: Sutherland-Hodgman against two planes.
+// clipper.cpp: Sutherland-Hodgman with llvmpipe's choices of interpolation
+// direction and fan order (see clipper.h).
 #include "raster/clipper.h"
+
+#include <cmath>
 
 namespace st {
 
 namespace {
 
-// Signed distances: >= 0 inside.
-float near_distance(const glm::vec4& p) { return p.z + p.w; }
-float far_distance(const glm::vec4& p) { return p.w - p.z; }
-
-VertexOut interpolate(const VertexOut& in, const VertexOut& out, float t, int varying_count) {
-    VertexOut v;
-    v.position = in.position + (out.position - in.position) * t;
-    for (int s = 0; s < varying_count; ++s)
-        v.varyings[s] = in.varyings[s] + (out.varyings[s] - in.varyings[s]) * t;
-    return v;
+// Signed distance to plane i (>= 0 inside): the dot product with the plane's
+// coefficients in Mesa reduces to one rounded add or subtract.
+float plane_distance(const glm::vec4& p, int plane) {
+    switch (plane) {
+        case 0: return p.w - p.x;
+        case 1: return p.x + p.w;
+        case 2: return p.w - p.y;
+        case 3: return p.y + p.w;
+        case 4: return p.z + p.w;
+        default: return p.w - p.z;
+    }
 }
 
-// Always interpolates from the inside vertex towards the outside one, so an
-// edge shared by two triangles yields the same new vertex in both.
-void clip_plane(const std::vector<VertexOut>& src, float (*distance)(const glm::vec4&),
-                int varying_count, std::vector<VertexOut>& dst) {
-    dst.clear();
-    for (size_t i = 0; i < src.size(); ++i) {
-        const VertexOut& cur = src[i];
-        const VertexOut& next = src[(i + 1) % src.size()];
-        const float dc = distance(cur.position), dn = distance(next.position);
-        if (dc >= 0) dst.push_back(cur);
-        if ((dc >= 0) != (dn >= 0)) {
-            if (dc >= 0) dst.push_back(interpolate(cur, next, dc / (dc - dn), varying_count));
-            else dst.push_back(interpolate(next, cur, dn / (dn - dc), varying_count));
-        }
+// dst = from + t * (to - from), three rounded operations per component.
+glm::vec4 lerp_unfused(const glm::vec4& from, const glm::vec4& to, float t) {
+    glm::vec4 r;
+    for (int i = 0; i < 4; ++i) {
+        const float d = to[i] - from[i];
+        const float td = t * d;
+        r[i] = from[i] + td;
     }
+    return r;
+}
+
+// The new vertex on the segment from `from` towards `to` at parameter t, with
+// Mesa's C viewport transform: ((x * (1/w)) * scale) + translate, unfused.
+ClipVertex make_vertex(const ClipVertex& from, const ClipVertex& to, float t, int varying_count,
+                       const Viewport& vp) {
+    ClipVertex v;
+    v.out.position = lerp_unfused(from.out.position, to.out.position, t);
+    for (int s = 0; s < varying_count; ++s)
+        v.out.varyings[s] = lerp_unfused(from.out.varyings[s], to.out.varyings[s], t);
+    const float scale_x = vp.width * 0.5f, trans_x = vp.x0 + vp.width * 0.5f;
+    const float scale_y = vp.height * 0.5f, trans_y = vp.y0 + vp.height * 0.5f;
+    const float scale_z = (vp.far - vp.near) * 0.5f, trans_z = (vp.far + vp.near) * 0.5f;
+    const glm::vec4& p = v.out.position;
+    const float oow = 1.0f / p.w;
+    const float x = (p.x * oow) * scale_x, y = (p.y * oow) * scale_y, z = (p.z * oow) * scale_z;
+    v.window = WindowPos{x + trans_x, y + trans_y, z + trans_z, oow};
+    return v;
 }
 
 }  // namespace
 
-void clip_near_far(const VertexOut& a, const VertexOut& b, const VertexOut& c, int varying_count,
-                   std::vector<VertexOut>& polygon) {
-    std::vector<VertexOut> tmp{a, b, c};
-    clip_plane(tmp, near_distance, varying_count, polygon);
-    if (polygon.size() < 3) {
-        polygon.clear();
-        return;
+unsigned clip_mask(const glm::vec4& p) {
+    unsigned m = 0;
+    // Written as negated "inside" tests so that NaN counts as outside.
+    m |= unsigned(!(p.x <= p.w)) << 0;
+    m |= unsigned(!(p.x + p.w >= 0.0f)) << 1;
+    m |= unsigned(!(p.y <= p.w)) << 2;
+    m |= unsigned(!(p.y + p.w >= 0.0f)) << 3;
+    m |= unsigned(!(p.z + p.w >= 0.0f)) << 4;
+    m |= unsigned(!(p.z <= p.w)) << 5;
+    return m;
+}
+
+void clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, unsigned mask_or,
+                   int varying_count, const Viewport& viewport, std::vector<ClipVertex>& out) {
+    // Polygon vertices live in `pool`; lists hold indices into it.
+    std::vector<ClipVertex> pool{a, b, c};
+    std::vector<int> in{0, 1, 2}, next;
+    for (int plane = 0; plane < 6 && in.size() >= 3; ++plane) {
+        if (!(mask_or >> plane & 1)) continue;
+        next.clear();
+        in.push_back(in[0]);  // close the loop; keeps the first vertex first
+        float dp_prev = plane_distance(pool[size_t(in[0])].out.position, plane);
+        if (!std::isfinite(dp_prev)) return;
+        for (size_t i = 1; i < in.size(); ++i) {
+            const int prev = in[i - 1], cur = in[i];
+            const float dp = plane_distance(pool[size_t(cur)].out.position, plane);
+            if (!std::isfinite(dp)) return;
+            bool crosses;
+            if (dp_prev >= 0.0f) {
+                next.push_back(prev);
+                crosses = dp < 0.0f;
+            } else {
+                crosses = !(dp < 0.0f);
+            }
+            if (crosses) {
+                // Interpolate from the endpoint nearer the plane, so t <= 0.5
+                // and a shared edge gives the same vertex from either side.
+                const float denom = dp - dp_prev;
+                const ClipVertex &p = pool[size_t(prev)], &q = pool[size_t(cur)];
+                ClipVertex v;
+                if (dp < 0.0f) {  // going out
+                    v = (-dp < dp_prev) ? make_vertex(q, p, dp / denom, varying_count, viewport)
+                                        : make_vertex(p, q, -dp_prev / denom, varying_count, viewport);
+                } else {          // coming back in
+                    v = (-dp_prev < dp) ? make_vertex(p, q, -dp_prev / denom, varying_count, viewport)
+                                        : make_vertex(q, p, dp / denom, varying_count, viewport);
+                }
+                next.push_back(int(pool.size()));
+                pool.push_back(v);
+            }
+            dp_prev = dp;
+        }
+        in.swap(next);
     }
-    tmp.swap(polygon);
-    clip_plane(tmp, far_distance, varying_count, polygon);
-    if (polygon.size() < 3) polygon.clear();
+    // GL's provoking vertex is the last: triangles (i-1, i, 0).
+    for (size_t i = 2; i < in.size(); ++i) {
+        out.push_back(pool[size_t(in[i - 1])]);
+        out.push_back(pool[size_t(in[i])]);
+        out.push_back(pool[size_t(in[0])]);
+    }
 }
 
 }  // namespace st

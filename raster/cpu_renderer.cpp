@@ -31,6 +31,7 @@ struct PreparedDraw {
     int varying_count = 0;
     std::vector<VertexOut> shaded;        // vertex stage output, per vertex
     std::vector<WindowPos> window;        // viewport transform of `shaded`
+    std::vector<unsigned> clip_masks;     // outcodes of `shaded`
 };
 
 // Per-worker scratch, so the tile phase allocates nothing once warm.
@@ -56,7 +57,7 @@ struct CpuRenderer::Impl {
     std::vector<SetupTriangle> triangles;
     std::vector<Plane> planes;
     std::vector<std::vector<uint32_t>> bins;
-    std::deque<VertexOut> clipped;  // vertices made by clipping (stable addresses)
+    std::deque<ClipVertex> clipped;  // vertices of clipped triangles (stable addresses)
 
     void run_vertex_stage(PreparedDraw& draw, const Viewport& viewport);
     void setup_and_bin(std::vector<PreparedDraw>& draws, const Pass& pass, const Viewport& viewport);
@@ -103,15 +104,20 @@ void CpuRenderer::Impl::run_vertex_stage(PreparedDraw& d, const Viewport& viewpo
     const int n = va.vertex_count();
     d.shaded.resize(size_t(n));
     d.window.resize(size_t(n));
+    d.clip_masks.resize(size_t(n));
     pool.run((n + kVertexChunk - 1) / kVertexChunk, [&](int chunk, int) {
         const int end = std::min(n, (chunk + 1) * kVertexChunk);
         for (int v = chunk * kVertexChunk; v < end; ++v) {
             d.vertex->run(va.vertex(v), d.shaded[size_t(v)]);
             d.window[size_t(v)] = to_window(d.shaded[size_t(v)].position, viewport);
+            d.clip_masks[size_t(v)] = clip_mask(d.shaded[size_t(v)].position);
         }
     });
 }
 
+// Primitive assembly, clipping (clipper.h), setup (triangle_setup.h) and
+// binning, in draw and index order: the order of each tile's bin is the
+// order in which its triangles blend.
 void CpuRenderer::Impl::setup_and_bin(std::vector<PreparedDraw>& draws, const Pass& pass,
                                       const Viewport& viewport) {
     triangles.clear();
@@ -134,28 +140,36 @@ void CpuRenderer::Impl::setup_and_bin(std::vector<PreparedDraw>& draws, const Pa
                 bins[size_t(ty) * tiles_x + tx].push_back(index);
     };
 
-    std::vector<VertexOut> polygon;
+    std::vector<ClipVertex> clipped_tris;
     for (uint32_t di = 0; di < draws.size(); ++di) {
         PreparedDraw& d = draws[di];
         const auto& idx = d.call->indices;
         for (size_t t = 0; t + 2 < idx.size(); t += 3) {
             const uint32_t i[3] = {idx[t], idx[t + 1], idx[t + 2]};
-            const bool needs_clip = outside_near_far(d.shaded[i[0]].position) ||
-                                    outside_near_far(d.shaded[i[1]].position) ||
-                                    outside_near_far(d.shaded[i[2]].position);
-            if (!needs_clip) {
+            unsigned mask_or = 0, mask_and = ~0u;
+            for (uint32_t k : i) {
+                mask_or |= d.clip_masks[k];
+                mask_and &= d.clip_masks[k];
+            }
+            if (mask_and) continue;  // entirely outside one plane
+            if (!mask_or) {
                 SetupVertex sv[3];
                 for (int k = 0; k < 3; ++k) sv[k] = {d.window[i[k]], d.shaded[i[k]].varyings.data()};
                 emit(sv[0], sv[1], sv[2], di, d.varying_count);
                 continue;
             }
-            clip_near_far(d.shaded[i[0]], d.shaded[i[1]], d.shaded[i[2]], d.varying_count, polygon);
-            std::vector<SetupVertex> sv;
-            for (const VertexOut& v : polygon) {
-                const VertexOut& kept = clipped.emplace_back(v);
-                sv.push_back({to_window(kept.position, viewport), kept.varyings.data()});
+            ClipVertex cv[3];
+            for (int k = 0; k < 3; ++k) cv[k] = {d.shaded[i[k]], d.window[i[k]]};
+            clipped_tris.clear();
+            clip_triangle(cv[0], cv[1], cv[2], mask_or, d.varying_count, viewport, clipped_tris);
+            for (size_t k = 0; k + 2 < clipped_tris.size(); k += 3) {
+                SetupVertex sv[3];
+                for (int j = 0; j < 3; ++j) {
+                    const ClipVertex& kept = clipped.emplace_back(clipped_tris[k + size_t(j)]);
+                    sv[j] = {kept.window, kept.out.varyings.data()};
+                }
+                emit(sv[0], sv[1], sv[2], di, d.varying_count);
             }
-            for (size_t k = 1; k + 1 < sv.size(); ++k) emit(sv[0], sv[k], sv[k + 1], di, d.varying_count);
         }
     }
 }
