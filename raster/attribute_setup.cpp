@@ -1,4 +1,6 @@
-// attribute_setup.cpp: see attribute_setup.h.
+// attribute_setup.cpp: llvmpipe's coefficient setup (lp_state_setup.c,
+// init_args and calc_coef4), operation for operation. Nothing here is fused:
+// the setup code is built from separate LLVM fmul/fsub instructions.
 #include "raster/attribute_setup.h"
 
 namespace st {
@@ -6,21 +8,26 @@ namespace st {
 void setup_attribute_planes(const SetupVertex& v0, const SetupVertex& v1, const SetupVertex& v2,
                             int varying_count, std::vector<Plane>& planes) {
     // Pixel index (0, 0) is centred at window (0.5, 0.5).
-    const float x0 = v0.pos.x - 0.5f, y0 = v0.pos.y - 0.5f;
+    const float x0_center = v0.pos.x - 0.5f, y0_center = v0.pos.y - 0.5f;
     const float dx01 = v0.pos.x - v1.pos.x, dy01 = v0.pos.y - v1.pos.y;
     const float dx20 = v2.pos.x - v0.pos.x, dy20 = v2.pos.y - v0.pos.y;
-    const float oneoverarea = 1.0f / (dx01 * dy20 - dx20 * dy01);
+    const float e = dx01 * dy20, f = dy01 * dx20;
+    const float ooa = 1.0f / (e - f);
+    const float dx20_ooa = dx20 * ooa, dy20_ooa = dy20 * ooa;
+    const float dx01_ooa = dx01 * ooa, dy01_ooa = dy01 * ooa;
 
     auto plane = [&](float a0, float a1, float a2) {
         const float da01 = a0 - a1, da20 = a2 - a0;
         Plane p;
-        p.dadx = (da01 * dy20 - dy01 * da20) * oneoverarea;
-        p.dady = (da20 * dx01 - dx20 * da01) * oneoverarea;
-        p.a0 = a0 - (p.dadx * x0 + p.dady * y0);
+        p.dadx = da01 * dy20_ooa - da20 * dy01_ooa;
+        p.dady = da20 * dx01_ooa - da01 * dx20_ooa;
+        const float at_v0 = p.dadx * x0_center + p.dady * y0_center;
+        p.a0 = a0 - at_v0;
         planes.push_back(p);
     };
     plane(v0.pos.z, v1.pos.z, v2.pos.z);
     plane(v0.pos.inv_w, v1.pos.inv_w, v2.pos.inv_w);
+    // Perspective-correct varyings: premultiplied by 1/w per vertex.
     for (int slot = 0; slot < varying_count; ++slot)
         for (int c = 0; c < 4; ++c)
             plane(v0.varyings[slot][c] * v0.pos.inv_w, v1.varyings[slot][c] * v1.pos.inv_w,

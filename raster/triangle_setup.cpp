@@ -60,8 +60,12 @@ bool setup_triangle(const SetupVertex& v0, const SetupVertex& v1, const SetupVer
         tri.edge[i] = make_edge(x[a], y[a], x[b], y[b]);
     }
 
+    // llvmpipe computes the area with the opposite sign (y down) and swaps
+    // v0 and v1 of what it sees as clockwise triangles (lp_setup_tri.c,
+    // triangle_both); the planes' reference vertex follows that swap.
     tri.first_plane = uint32_t(planes.size());
-    setup_attribute_planes(v0, v1, v2, varying_count, planes);
+    if (area > 0) setup_attribute_planes(v1, v0, v2, varying_count, planes);
+    else setup_attribute_planes(v0, v1, v2, varying_count, planes);
     return true;
 }
 

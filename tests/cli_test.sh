@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# Command-line tests: run build/shadertwin as a user would, against the live
+# llvmpipe reference. Usage: cli_test.sh BINARY CASE. Each CASE is one ctest.
+set -euo pipefail
+bin="$1"
+case_name="$2"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+triangle_scenes() { "$bin" list | grep '^triangles-'; }
+
+# Runs a command that must fail with exit 2, one line on stderr, and no file
+# left in its output folder.
+expect_bad_input() {
+  local what="$1"; shift
+  local out="$work/bad-out"
+  rm -rf "$out"; mkdir -p "$out"
+  set +e
+  "$@" --out "$out" >"$work/stdout" 2>"$work/stderr"
+  local rc=$?
+  set -e
+  [ "$rc" -eq 2 ] || fail "$what: exit $rc, expected 2"
+  [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "$what: stderr is not one line: $(cat "$work/stderr")"
+  [ -z "$(ls -A "$out")" ] || fail "$what: left files behind: $(ls -A "$out")"
+  echo "ok   $what: $(cat "$work/stderr")"
+}
+
+case "$case_name" in
+  compare_builtin)
+    # Every triangles-* scene meets its criteria (strict default unless stated).
+    "$bin" compare $(triangle_scenes) --json --out "$work" >"$work/out.jsonl" || {
+      cat "$work/out.jsonl"; fail "compare reported a failing scene"; }
+    [ "$(wc -l <"$work/out.jsonl")" -eq "$(triangle_scenes | wc -l)" ] || fail "one line per scene expected"
+    for key in scene pass coverage_mismatch identical_fraction_8bit max_diff_8bit \
+               identical_fraction_float max_rel_diff_float; do
+      grep -q "\"$key\"" "$work/out.jsonl" || fail "missing field $key"
+    done
+    cat "$work/out.jsonl"
+    for s in $(triangle_scenes); do
+      [ -f "$work/$s.diff.png" ] || fail "no heat map for $s"
+    done
+    ;;
+
+  golden)
+    "$bin" golden check
+    ;;
+
+  threads)
+    # The same hash for 1, 2, 3 and 8 threads and across repeated runs.
+    for t in 1 2 3 8 2; do
+      "$bin" render $(triangle_scenes) --threads "$t" --out "$work/t$t" |
+        sed -E 's/.*"hash":"([0-9A-Fa-f]+)".*"scene":"([^"]+)".*/\2 \1/' | sort >"$work/hashes.$t"
+    done
+    for t in 1 3 8; do
+      diff -u "$work/hashes.2" "$work/hashes.$t" || fail "hashes differ between 2 and $t threads"
+    done
+    [ "$(wc -l <"$work/hashes.2")" -eq "$(triangle_scenes | wc -l)" ] || fail "missing hashes"
+    ;;
+
+  render_outputs)
+    for backend in cpu gl; do
+      line=$("$bin" render triangles-basic --backend "$backend" --out "$work")
+      echo "$line"
+      for key in scene backend width height hash ms; do
+        echo "$line" | grep -q "\"$key\"" || fail "render output lacks $key"
+      done
+      [ -s "$work/triangles-basic.$backend.exr" ] || fail "no EXR for $backend"
+      [ -s "$work/triangles-basic.$backend.png" ] || fail "no PNG for $backend"
+      iinfo -v "$work/triangles-basic.$backend.exr" >"$work/info"
+      for key in backend version renderer cpu_flags; do
+        grep -q "shadertwin:$key" "$work/info" || fail "EXR metadata lacks $key"
+      done
+    done
+    ls -A "$work" | grep -q '^\.tmp' && fail "temporary files left behind"
+    "$bin" diff "$work/triangles-basic.cpu.exr" "$work/triangles-basic.gl.exr" --json --out "$work/d.png"
+    [ -s "$work/d.png" ] || fail "diff wrote no heat map"
+    ;;
+
+  overrides)
+    # --set changes the image; a missing parent path is an error.
+    a=$("$bin" render triangles-basic --out "$work")
+    b=$("$bin" render triangles-basic --set triangles.0.colours.0=[0,0,0,1] --out "$work")
+    [ "$a" != "$b" ] || fail "--set did not change the image"
+    ;;
+
+  bad_input)
+    expect_bad_input "unknown scene" "$bin" render no-such-scene
+    printf '{"kind": "triangles", "width": 8,' >"$work/malformed.json"
+    expect_bad_input "malformed JSON" "$bin" render "$work/malformed.json"
+    printf '{"kind": "triangles", "width": 8, "height": 8, "triangles": [{"positions": [[0,0],[1,0],[0,1]], "colour": [1,1,1,1]}], "width": NaN}' >"$work/nan.json"
+    expect_bad_input "NaN literal" "$bin" render "$work/nan.json"
+    expect_bad_input "missing field" "$bin" render triangles-basic --set triangles.0.colours=null --set triangles.0.colour=null
+    expect_bad_input "unknown field" "$bin" render triangles-basic --set colour_space=linear
+    expect_bad_input "mistyped field" "$bin" render triangles-basic --set width='"wide"'
+    expect_bad_input "NaN value" "$bin" render triangles-basic --set width=NaN
+    expect_bad_input "out-of-range depth" "$bin" render triangles-basic --set triangles.0.positions.0=[1,2,7]
+    expect_bad_input "zero resolution" "$bin" render triangles-basic --set width=0
+    expect_bad_input "absurd resolution" "$bin" render triangles-basic --set height=100000
+    expect_bad_input "threads 0" "$bin" render triangles-basic --threads 0
+    expect_bad_input "unknown backend" "$bin" render triangles-basic --backend vulkan
+    expect_bad_input "bad --set path" "$bin" render triangles-basic --set camera.fov=40
+    expect_bad_input "compare unknown scene" "$bin" compare triangles-basic nope
+    ;;
+
+  *)
+    fail "unknown case $case_name"
+    ;;
+esac
+echo "PASS $case_name"
