@@ -75,6 +75,10 @@ int cmd_render(const std::vector<std::string>& names, const std::string& backend
         nlohmann::json j = {{"scene", scene.name},  {"backend", backend_name(backend)},
                             {"width", r.image.width}, {"height", r.image.height},
                             {"hash", pixel_hash(r.image)}, {"ms", r.ms}};
+        if (backend == Backend::Cpu)
+            j["stages"] = {{"vertex", r.stages.vertex_ms},       {"setup_binning", r.stages.setup_ms},
+                           {"rasterization", r.stages.raster_ms}, {"fragment", r.stages.fragment_ms},
+                           {"blend_output", r.stages.output_ms}};
         std::cout << j.dump() << std::endl;
     }
     return 0;

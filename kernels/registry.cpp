@@ -7,6 +7,7 @@
 
 #include "kernels/coverage.h"
 #include "kernels/interp.h"
+#include "kernels/textured.h"
 
 namespace st {
 
@@ -17,6 +18,7 @@ template <class T> using Factory = std::function<std::unique_ptr<T>()>;
 const std::map<std::string, Factory<VertexTwin>>& vertex_twins() {
     static const std::map<std::string, Factory<VertexTwin>> twins = {
         {"interp", [] { return std::make_unique<InterpVertex>(); }},
+        {"textured", [] { return std::make_unique<TexturedVertex>(); }},
     };
     return twins;
 }
@@ -25,6 +27,7 @@ const std::map<std::string, Factory<FragmentTwin>>& fragment_twins() {
     static const std::map<std::string, Factory<FragmentTwin>> twins = {
         {"interp", [] { return std::make_unique<InterpFragment>(); }},
         {"coverage", [] { return std::make_unique<CoverageFragment>(); }},
+        {"textured", [] { return std::make_unique<TexturedFragment>(); }},
     };
     return twins;
 }

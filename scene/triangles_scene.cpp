@@ -4,6 +4,7 @@
 
 #include "scene/input_error.h"
 #include "scene/scene_kinds.h"
+#include "scene/texture_patterns.h"
 
 namespace st {
 
@@ -49,11 +50,16 @@ Frame build_triangles_scene(JsonReader& scene, SceneSize size) {
 
     const bool pixels = scene.choice_or("coordinates", "clip", {"clip", "pixels"}) == "pixels";
     DrawCall draw;
-    draw.vertex = "interp";
-    draw.fragment = "interp";
+    // With a texture, the textured program (colour x texel, per-vertex uvs).
+    const bool textured = scene.has("texture");
+    if (textured) {
+        JsonReader tex = scene.object("texture");
+        draw.textures.push_back(read_pattern_texture(tex, "tex"));
+    }
+    draw.vertex = draw.fragment = textured ? "textured" : "interp";
     draw.state.depth_test = scene.boolean_or("depth_test", false);
     draw.state.blend = parse_blend(scene.choice_or("blend", "none", {"none", "one_src_alpha", "alpha"}));
-    draw.vertices.attribute_count = 2;  // position, colour
+    draw.vertices.attribute_count = textured ? 3 : 2;  // position, colour[, uv]
 
     for (JsonReader& t : scene.objects("triangles", 1, kMaxTriangles)) {
         const auto& positions = t.array("positions", 3, 3);
@@ -73,6 +79,7 @@ Frame build_triangles_scene(JsonReader& scene, SceneSize size) {
                 colours.push_back(c);
             }
         }
+        const nlohmann::json* uvs = textured ? &t.array("uvs", 3, 3) : nullptr;
         for (size_t i = 0; i < 3; ++i) {
             const std::string where = t.field("positions") + "." + std::to_string(i);
             const size_t max_len = pixels ? 3 : 4;
@@ -90,6 +97,15 @@ Frame build_triangles_scene(JsonReader& scene, SceneSize size) {
             draw.indices.push_back(uint32_t(draw.vertices.vertex_count()));
             draw.vertices.data.push_back(pixels ? pixel_to_clip(p, size) : clip_position(p));
             draw.vertices.data.push_back(to_vec4(colours[i]));
+            if (uvs) {
+                const std::string uv_where = t.field("uvs") + "." + std::to_string(i);
+                const auto& uv = (*uvs)[i];
+                if (!uv.is_array() || uv.size() != 2)
+                    throw InputError("field '" + uv_where + "' must be an array of 2 numbers");
+                draw.vertices.data.push_back(glm::vec4(
+                    float(JsonReader::checked_number(uv[0], uv_where + ".0", -kHuge, kHuge)),
+                    float(JsonReader::checked_number(uv[1], uv_where + ".1", -kHuge, kHuge)), 0.0f, 1.0f));
+            }
         }
         t.finish();
     }

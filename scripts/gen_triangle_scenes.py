@@ -180,6 +180,32 @@ def main():
         ],
     })
 
+    # Textured triangles: bilinear and nearest filtering, repeat and clamp
+    # wrapping, float and 8-bit texels, magnified and minified, with texture
+    # coordinates beyond [0, 1].
+    for fmt in ("rgba32f", "rgba8"):
+        for filt in ("linear", "nearest"):
+            tris = []
+            for k, wrap_uv in enumerate((1.0, 3.7)):
+                x0 = 2 + k * 48
+                tris.append({"positions": [[x0, 2], [x0 + 44, 5], [x0 + 5, 60]],
+                             "colours": [[1, 1, 1, 1], [1, 1, 1, 1], [1, 1, 1, 1]],
+                             "uvs": [[-0.3, -0.2], [wrap_uv, 0.1], [0.2, wrap_uv]]})
+                tris.append({"positions": [[x0 + 44, 5], [x0 + 47, 62], [x0 + 5, 60]],
+                             "colours": [[1, 0.5, 1, 1], [0.5, 1, 1, 1], [1, 1, 0.5, 1]],
+                             "uvs": [[wrap_uv, 0.1], [wrap_uv * 0.9, wrap_uv * 1.1], [0.2, wrap_uv]]})
+            # Power-of-two and other sizes take different wrap code in llvmpipe.
+            for (tw, th), size_name in (((13, 9), "npot"), ((16, 8), "pot")):
+                for wrap in ("repeat", "clamp"):
+                    write(f"triangles-texture-{fmt}-{filt}-{wrap}-{size_name}", {
+                        "kind": "triangles",
+                        "description": f"Two quads sampling a {tw}x{th} {fmt} noise texture, {filt} filter, {wrap} wrap, magnified and minified.",
+                        "width": 100, "height": 64, "coordinates": "pixels",
+                        "texture": {"format": fmt, "filter": filt, "wrap": wrap, "width": tw, "height": th,
+                                    "pattern": "noise", "seed": 7},
+                        "triangles": tris,
+                    })
+
 
 if __name__ == "__main__":
     main()

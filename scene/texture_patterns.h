@@ -1,0 +1,17 @@
+// texture_patterns.h: deterministic procedural textures for scenes, so no
+// image file has to ship and both backends get the same texels.
+#pragma once
+
+#include <string>
+
+#include "frame/frame.h"
+#include "scene/json_reader.h"
+
+namespace st {
+
+// Reads a texture object: {"format": "rgba8"|"rgba32f", "filter":
+// "linear"|"nearest", "wrap": "repeat"|"clamp", "width", "height",
+// "pattern": "checker"|"noise", "seed"}. `sampler` is the GLSL uniform name.
+Texture read_pattern_texture(JsonReader& r, const std::string& sampler);
+
+}  // namespace st
