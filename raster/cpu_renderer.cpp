@@ -7,6 +7,7 @@
 
 #include "kernels/registry.h"
 #include "raster/clipper.h"
+#include "raster/float_env.h"
 #include "raster/fragment_inputs.h"
 #include "raster/framebuffer.h"
 #include "raster/output_merge.h"
@@ -218,6 +219,7 @@ void CpuRenderer::Impl::shade_tile(int tile, int worker, std::vector<PreparedDra
 
 void CpuRenderer::execute() {
     Impl& m = *impl_;
+    const FlushDenormals float_env;  // as llvmpipe's threads (float_env.h)
     times_ = StageTimes{};
     for (size_t pi = 0; pi < m.frame.passes.size(); ++pi) {
         const Pass& pass = m.frame.passes[pi];

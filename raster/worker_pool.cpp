@@ -2,6 +2,8 @@
 // tiles or vertex ranges, coarse enough that the lock is not the bottleneck.
 #include "raster/worker_pool.h"
 
+#include "raster/float_env.h"
+
 namespace st {
 
 WorkerPool::WorkerPool(int threads) {
@@ -31,6 +33,7 @@ void WorkerPool::drain(int worker) {
 }
 
 void WorkerPool::work(int worker) {
+    const FlushDenormals float_env;  // workers only ever render
     unsigned seen = 0;
     for (;;) {
         {
