@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,17 @@ struct DrawState {
     BlendMode blend = BlendMode::None;
 };
 
+// Work the host does on a draw's vertices at the start of every frame, before
+// the vertex stage, on both backends (and inside their frame time): the
+// thin-slab "CPU" variant evaluates its model per vertex here. run() reads
+// some attributes and overwrites others; it must give the same result when
+// run again on its own output.
+class HostStage {
+public:
+    virtual ~HostStage() = default;
+    virtual void run(VertexArray& vertices) const = 0;
+};
+
 struct DrawCall {
     // Program stages by name: glsl/<vertex>.vert and glsl/<fragment>.frag on
     // the GL side, the twins registered under the same names in kernels/.
@@ -73,6 +85,7 @@ struct DrawCall {
     std::vector<Uniform> uniforms;
     std::vector<Texture> textures;       // bound to units 0..N-1 in order
     DrawState state;
+    std::shared_ptr<const HostStage> host_stage;  // optional
 };
 
 struct Pass {

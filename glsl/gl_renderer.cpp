@@ -19,12 +19,32 @@ namespace st {
 
 namespace {
 
-std::string read_source(const std::string& path) {
+// Reads a shader and splices in `#include "file"` lines (paths relative to
+// the including file), so programs can share model code the way their twins
+// share C++ functions. The #line directives keep GL log line numbers
+// meaningful: the second number is the source-string index, and the log's
+// file is named in our error message.
+std::string read_source(const std::string& path, int depth = 0) {
+    if (depth > 8) throw std::runtime_error(path + ": #include nested too deeply");
     std::ifstream in(path);
     if (!in) throw std::runtime_error("cannot read shader " + path);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
+    const std::string dir = path.substr(0, path.find_last_of('/') + 1);
+    std::string out, line;
+    int number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        const auto first = line.find_first_not_of(" \t");
+        if (first != std::string::npos && line.compare(first, 8, "#include") == 0) {
+            const auto open = line.find('"'), close = line.rfind('"');
+            if (open == std::string::npos || close <= open)
+                throw std::runtime_error(path + ":" + std::to_string(number) + ": malformed #include");
+            out += read_source(dir + line.substr(open + 1, close - open - 1), depth + 1);
+            out += "#line " + std::to_string(number + 1) + "\n";
+            continue;
+        }
+        out += line + "\n";
+    }
+    return out;
 }
 
 GLuint compile(GLenum type, const std::string& path) {
@@ -95,6 +115,8 @@ struct GlRenderer::State {
         GLsizei index_count = 0;
         std::vector<GLuint> textures;
         DrawState state;
+        std::shared_ptr<const HostStage> host_stage;
+        VertexArray vertices;  // kept only when a host stage rewrites them per frame
     };
     struct Target {
         GLuint fbo = 0, colour = 0, depth = 0;
@@ -168,6 +190,10 @@ void GlRenderer::prepare(const Frame& frame) {
             State::Draw d;
             d.program = it->second;
             d.state = dc.state;
+            if (dc.host_stage) {
+                d.host_stage = dc.host_stage;
+                d.vertices = dc.vertices;
+            }
             d.index_count = GLsizei(dc.indices.size());
             glGenVertexArrays(1, &d.vao);
             glBindVertexArray(d.vao);
@@ -224,14 +250,14 @@ void GlRenderer::execute() {
     context_->make_current();
     glDisable(GL_DITHER);
     glDisable(GL_CULL_FACE);
-    for (const State::Target& t : state_->passes) {
+    for (State::Target& t : state_->passes) {
         glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
         glViewport(0, 0, t.width, t.height);
         glDepthMask(GL_TRUE);
         glClearColor(t.clear_colour.r, t.clear_colour.g, t.clear_colour.b, t.clear_colour.a);
         glClearDepth(t.clear_depth);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        for (const State::Draw& d : t.draws) {
+        for (State::Draw& d : t.draws) {
             if (d.state.depth_test) {
                 glEnable(GL_DEPTH_TEST);
                 glDepthFunc(GL_LESS);
@@ -249,6 +275,13 @@ void GlRenderer::execute() {
                     glEnable(GL_BLEND);
                     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
                     break;
+            }
+            if (d.host_stage) {
+                // The host's per-frame work and its upload belong to the frame.
+                d.host_stage->run(d.vertices);
+                glBindBuffer(GL_ARRAY_BUFFER, d.vbo);
+                glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(d.vertices.data.size() * sizeof(glm::vec4)),
+                                d.vertices.data.data());
             }
             glUseProgram(d.program);
             for (size_t unit = 0; unit < d.textures.size(); ++unit) {

@@ -7,7 +7,7 @@ namespace st {
 
 class CoverageFragment final : public ScalarFragmentTwin<CoverageFragment> {
 public:
-    glm::vec4 main(const Fragment&) const { return glm::vec4(1.0f); }
+    glm::vec4 main(const Fragment&) const;
 };
 
 }  // namespace st

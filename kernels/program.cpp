@@ -23,6 +23,19 @@ float Bindings::get_float(const std::string& name) const {
     return find(uniforms, name, UniformType::Float).value[0];
 }
 
+glm::vec3 Bindings::get_vec3(const std::string& name) const {
+    const auto& v = find(uniforms, name, UniformType::Vec3).value;
+    return glm::vec3(v[0], v[1], v[2]);
+}
+
+glm::mat4 Bindings::get_mat4(const std::string& name) const {
+    const auto& v = find(uniforms, name, UniformType::Mat4).value;
+    glm::mat4 m;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) m[c][r] = v[size_t(c * 4 + r)];
+    return m;
+}
+
 glm::vec4 Bindings::get_vec4(const std::string& name) const {
     const auto& v = find(uniforms, name, UniformType::Vec4).value;
     return glm::vec4(v[0], v[1], v[2], v[3]);

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "frame/frame.h"
@@ -38,7 +40,9 @@ struct Bindings {
     // Throws std::runtime_error naming the uniform when it is absent or of
     // another type, so a scene that forgets one fails loudly.
     float get_float(const std::string& name) const;
+    glm::vec3 get_vec3(const std::string& name) const;
     glm::vec4 get_vec4(const std::string& name) const;
+    glm::mat4 get_mat4(const std::string& name) const;
     const Sampler2D& sampler(const std::string& name) const;
 };
 

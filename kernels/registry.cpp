@@ -5,9 +5,11 @@
 #include <functional>
 #include <map>
 
+#include "kernels/background.h"
 #include "kernels/coverage.h"
 #include "kernels/interp.h"
 #include "kernels/textured.h"
+#include "kernels/thin_slab.h"
 
 namespace st {
 
@@ -19,6 +21,10 @@ const std::map<std::string, Factory<VertexTwin>>& vertex_twins() {
     static const std::map<std::string, Factory<VertexTwin>> twins = {
         {"interp", [] { return std::make_unique<InterpVertex>(); }},
         {"textured", [] { return std::make_unique<TexturedVertex>(); }},
+        {"background", [] { return std::make_unique<BackgroundVertex>(); }},
+        {"thin_slab", [] { return std::make_unique<ThinSlabVertex>(); }},
+        {"thin_slab_vertex", [] { return std::make_unique<ThinSlabVertexVariant>(); }},
+        {"thin_slab_host", [] { return std::make_unique<ThinSlabHostVertex>(); }},
     };
     return twins;
 }
@@ -28,6 +34,11 @@ const std::map<std::string, Factory<FragmentTwin>>& fragment_twins() {
         {"interp", [] { return std::make_unique<InterpFragment>(); }},
         {"coverage", [] { return std::make_unique<CoverageFragment>(); }},
         {"textured", [] { return std::make_unique<TexturedFragment>(); }},
+        {"background", [] { return std::make_unique<BackgroundFragment>(); }},
+        {"thin_slab", [] { return std::make_unique<ThinSlabFragment>(); }},
+        {"thin_slab_lit", [] { return std::make_unique<ThinSlabLitFragment>(); }},
+        {"thin_slab_baseline", [] { return std::make_unique<ThinSlabBaselineFragment>(); }},
+        {"thin_slab_sweep", [] { return std::make_unique<ThinSlabSweepFragment>(); }},
     };
     return twins;
 }

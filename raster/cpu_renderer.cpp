@@ -25,6 +25,7 @@ constexpr int kVertexChunk = 1024;
 
 struct PreparedDraw {
     const DrawCall* call = nullptr;
+    VertexArray vertices;                 // this frame's vertices (the host stage writes here)
     std::unique_ptr<VertexTwin> vertex;
     std::unique_ptr<FragmentTwin> fragment;
     std::deque<Sampler2D> samplers;  // deque: Bindings keeps pointers
@@ -83,6 +84,7 @@ void CpuRenderer::prepare(const Frame& frame) {
         for (const DrawCall& call : pass.draws) {
             PreparedDraw& d = draws.emplace_back();
             d.call = &call;
+            d.vertices = call.vertices;
             d.vertex = make_vertex_twin(call.vertex);
             if (!d.vertex) throw std::runtime_error("no C++ twin for vertex program '" + call.vertex + "'");
             d.fragment = make_fragment_twin(call.fragment);
@@ -101,7 +103,8 @@ void CpuRenderer::prepare(const Frame& frame) {
 }
 
 void CpuRenderer::Impl::run_vertex_stage(PreparedDraw& d, const Viewport& viewport) {
-    const VertexArray& va = d.call->vertices;
+    if (d.call->host_stage) d.call->host_stage->run(d.vertices);
+    const VertexArray& va = d.vertices;
     const int n = va.vertex_count();
     d.shaded.resize(size_t(n));
     d.window.resize(size_t(n));

@@ -24,6 +24,8 @@ constexpr int kMaxResolution = 8192;
 const std::map<std::string, SceneBuilder>& scene_builders() {
     static const std::map<std::string, SceneBuilder> builders = {
         {"triangles", build_triangles_scene},
+        {"thin-slab", build_thin_slab_scene},
+        {"thin-slab-sweep", build_thin_slab_sweep_scene},
     };
     return builders;
 }

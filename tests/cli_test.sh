@@ -9,7 +9,7 @@ trap 'rm -rf "$work"' EXIT
 
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-triangle_scenes() { "$bin" list | grep '^triangles-'; }
+all_scenes() { "$bin" list; }
 
 # Runs a command that must fail with exit 2, one line on stderr, and no file
 # left in its output folder.
@@ -29,16 +29,16 @@ expect_bad_input() {
 
 case "$case_name" in
   compare_builtin)
-    # Every triangles-* scene meets its criteria (strict default unless stated).
-    "$bin" compare $(triangle_scenes) --json --out "$work" >"$work/out.jsonl" || {
+    # Every built-in scene meets its criteria (strict default unless stated).
+    "$bin" compare $(all_scenes) --json --out "$work" >"$work/out.jsonl" || {
       cat "$work/out.jsonl"; fail "compare reported a failing scene"; }
-    [ "$(wc -l <"$work/out.jsonl")" -eq "$(triangle_scenes | wc -l)" ] || fail "one line per scene expected"
+    [ "$(wc -l <"$work/out.jsonl")" -eq "$(all_scenes | wc -l)" ] || fail "one line per scene expected"
     for key in scene pass coverage_mismatch identical_fraction_8bit max_diff_8bit \
                identical_fraction_float max_rel_diff_float; do
       grep -q "\"$key\"" "$work/out.jsonl" || fail "missing field $key"
     done
     cat "$work/out.jsonl"
-    for s in $(triangle_scenes); do
+    for s in $(all_scenes); do
       [ -f "$work/$s.diff.png" ] || fail "no heat map for $s"
     done
     ;;
@@ -50,13 +50,13 @@ case "$case_name" in
   threads)
     # The same hash for 1, 2, 3 and 8 threads and across repeated runs.
     for t in 1 2 3 8 2; do
-      "$bin" render $(triangle_scenes) --threads "$t" --out "$work/t$t" |
+      "$bin" render $(all_scenes) --threads "$t" --out "$work/t$t" |
         sed -E 's/.*"hash":"([0-9A-Fa-f]+)".*"scene":"([^"]+)".*/\2 \1/' | sort >"$work/hashes.$t"
     done
     for t in 1 3 8; do
       diff -u "$work/hashes.2" "$work/hashes.$t" || fail "hashes differ between 2 and $t threads"
     done
-    [ "$(wc -l <"$work/hashes.2")" -eq "$(triangle_scenes | wc -l)" ] || fail "missing hashes"
+    [ "$(wc -l <"$work/hashes.2")" -eq "$(all_scenes | wc -l)" ] || fail "missing hashes"
     ;;
 
   render_outputs)

@@ -1,0 +1,212 @@
+// thin_slab_scene.cpp: the "thin-slab" kind, the paper's case study
+// (Frisvad et al., Sec. 4): a waving flag of the Faroe Islands in front of a
+// background painting, lit by a point light circling the flag.
+//
+// Everything geometric is computed here on the host, once, so both backends
+// receive identical numbers: the displaced flag mesh with its normals, the
+// camera matrix, the light position, the procedural flag and painting. The
+// `host` variant additionally evaluates Eq. 4-8 per vertex at the start of
+// every frame (ThinSlabHostStage), as the paper's CPU variant does.
+#include <cmath>
+#include <numbers>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "kernels/glsl_math.h"
+#include "kernels/thin_slab_model.h"
+#include "scene/input_error.h"
+#include "scene/scene_kinds.h"
+#include "scene/thin_slab_textures.h"
+
+namespace st {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Vertex layout of the host variant: the radiance slot is rewritten per frame.
+constexpr int kHostPosition = 0, kHostRadiance = 1, kHostUv = 2, kHostNormal = 3;
+
+class ThinSlabHostStage final : public HostStage {
+public:
+    ThinSlabHostStage(glm::vec3 eye, glm::vec3 light, float power, float tau1, glm::vec3 albedo)
+        : eye_(eye), light_(light), power_(power), tau1_(tau1), albedo_(albedo) {}
+
+    void run(VertexArray& va) const override {
+        for (int v = 0; v < va.vertex_count(); ++v) {
+            glm::vec4* a = &va.data[size_t(v) * size_t(va.attribute_count)];
+            a[kHostRadiance] = thin_slab(glm::vec3(a[kHostPosition]), glsl::normalize(glm::vec3(a[kHostNormal])),
+                                         eye_, light_, power_, tau1_, albedo_);
+        }
+    }
+
+private:
+    glm::vec3 eye_, light_;
+    float power_, tau1_;
+    glm::vec3 albedo_;
+};
+
+glm::vec3 vec3_of(const std::vector<double>& v) { return glm::vec3(float(v[0]), float(v[1]), float(v[2])); }
+
+Uniform uniform(const std::string& name, float v) {
+    Uniform u{name, UniformType::Float, {}};
+    u.value[0] = v;
+    return u;
+}
+
+Uniform uniform(const std::string& name, const glm::vec3& v) {
+    Uniform u{name, UniformType::Vec3, {}};
+    u.value[0] = v.x;
+    u.value[1] = v.y;
+    u.value[2] = v.z;
+    return u;
+}
+
+Uniform uniform(const std::string& name, const glm::mat4& m) {
+    Uniform u{name, UniformType::Mat4, {}};
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) u.value[size_t(c * 4 + r)] = m[c][r];
+    return u;
+}
+
+struct FlagShape {
+    double width, height, amplitude, frequency, time;
+    int columns, rows;
+};
+
+// The flag hangs from a pole at its left edge (u = 0) and waves along x:
+// z(u, v) = A u sin(2 pi (f u - t) + 1.3 v), so the pole side stays still.
+// Positions and analytic normals in double, stored as float.
+void flag_mesh(const FlagShape& f, bool host_layout, DrawCall& draw) {
+    draw.vertices.attribute_count = host_layout ? 4 : 3;
+    for (int j = 0; j <= f.rows; ++j)
+        for (int i = 0; i <= f.columns; ++i) {
+            const double u = double(i) / f.columns, v = double(j) / f.rows;
+            const double phase = 2.0 * kPi * (f.frequency * u - f.time) + 1.3 * v;
+            const double x = (u - 0.5) * f.width, y = (v - 0.5) * f.height;
+            const double z = f.amplitude * u * std::sin(phase);
+            const double dzdu = f.amplitude * (std::sin(phase) + u * std::cos(phase) * 2.0 * kPi * f.frequency);
+            const double dzdv = f.amplitude * u * std::cos(phase) * 1.3;
+            const double nx = -dzdu / f.width, ny = -dzdv / f.height, nz = 1.0;
+            const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
+            const glm::vec4 position(float(x), float(y), float(z), 1.0f);
+            const glm::vec4 normal(float(nx / len), float(ny / len), float(nz / len), 0.0f);
+            const glm::vec4 uv(float(u), float(v), 0.0f, 1.0f);
+            if (host_layout) {
+                for (const glm::vec4& a : {position, glm::vec4(0.0f), uv, normal}) draw.vertices.data.push_back(a);
+            } else {
+                for (const glm::vec4& a : {position, normal, uv}) draw.vertices.data.push_back(a);
+            }
+        }
+    const int stride = f.columns + 1;
+    for (int j = 0; j < f.rows; ++j)
+        for (int i = 0; i < f.columns; ++i) {
+            const uint32_t a = uint32_t(j * stride + i), b = a + 1, c = a + uint32_t(stride) + 1, d = a + uint32_t(stride);
+            for (uint32_t k : {a, b, c, a, c, d}) draw.indices.push_back(k);
+        }
+}
+
+DrawCall background_draw(const Texture& painting) {
+    DrawCall draw;
+    draw.vertex = draw.fragment = "background";
+    draw.vertices.attribute_count = 2;
+    const glm::vec4 corners[4][2] = {{{-1, -1, 1, 1}, {0, 0, 0, 1}}, {{1, -1, 1, 1}, {1, 0, 0, 1}},
+                                     {{1, 1, 1, 1}, {1, 1, 0, 1}}, {{-1, 1, 1, 1}, {0, 1, 0, 1}}};
+    for (const auto& c : corners) {
+        draw.vertices.data.push_back(c[0]);
+        draw.vertices.data.push_back(c[1]);
+    }
+    draw.indices = {0, 1, 2, 0, 2, 3};
+    draw.textures.push_back(painting);
+    return draw;
+}
+
+}  // namespace
+
+Frame build_thin_slab_scene(JsonReader& scene, SceneSize size) {
+    const std::string variant = scene.choice_or("variant", "fragment", {"fragment", "vertex", "host", "baseline"});
+
+    JsonReader material = scene.object("material");
+    const float tau1 = float(material.number("tau1", 0.0, 1e6));
+    const glm::vec3 albedo = vec3_of(material.numbers("albedo", 3, 3, 0.0, 1.0));
+    material.finish();
+
+    // The light circles the flag's vertical axis: angle 0 puts it on the
+    // camera's side (+z). An explicit `position` wins over the orbit.
+    JsonReader light_r = scene.object("light");
+    const float power = float(light_r.number("power", 0.0, 1e12));
+    const double radius = light_r.number_or("orbit_radius", 3.0, 0.0, 1e6);
+    const double height = light_r.number_or("orbit_height", 0.5, -1e6, 1e6);
+    const double angle = light_r.number_or("angle_deg", 0.0, -1e6, 1e6) * kPi / 180.0;
+    glm::vec3 light(float(radius * std::sin(angle)), float(height), float(radius * std::cos(angle)));
+    if (light_r.has("position")) light = vec3_of(light_r.numbers("position", 3, 3, -1e6, 1e6));
+    light_r.finish();
+
+    JsonReader camera = scene.object("camera");
+    const glm::vec3 eye = vec3_of(camera.numbers("position", 3, 3, -1e6, 1e6));
+    const glm::vec3 target = vec3_of(camera.numbers("target", 3, 3, -1e6, 1e6));
+    const glm::vec3 up = vec3_of(camera.has("up") ? camera.numbers("up", 3, 3, -1e6, 1e6) : std::vector<double>{0, 1, 0});
+    const float fov = float(camera.number_or("fov_deg", 40.0, 1.0, 170.0));
+    const float near = float(camera.number_or("near", 0.1, 1e-6, 1e6));
+    const float far = float(camera.number_or("far", 100.0, 1e-6, 1e9));
+    camera.finish();
+    if (!(far > near)) throw InputError("field 'camera.far' must exceed 'camera.near'");
+    if (glm::length(glm::cross(target - eye, up)) == 0.0f)
+        throw InputError("fields 'camera.position', 'camera.target' and 'camera.up' do not define a view");
+    const glm::mat4 view_proj = glm::perspective(glm::radians(fov), float(size.width) / float(size.height), near, far) *
+                                glm::lookAt(eye, target, up);
+
+    JsonReader flag_r = scene.object("flag");
+    FlagShape shape;
+    shape.width = flag_r.number_or("width", 2.2, 1e-6, 1e6);
+    shape.height = flag_r.number_or("height", 1.6, 1e-6, 1e6);
+    shape.columns = flag_r.integer_or("columns", 44, 1, 2048);
+    shape.rows = flag_r.integer_or("rows", 32, 1, 2048);
+    shape.amplitude = flag_r.number_or("wave_amplitude", 0.12, 0.0, 1e6);
+    shape.frequency = flag_r.number_or("wave_frequency", 1.2, 0.0, 1e3);
+    shape.time = flag_r.number_or("time", 0.0, -1e6, 1e6);
+    const int flag_tex_w = flag_r.integer_or("texture_width", 220, 22, 4096);
+    const int flag_tex_h = flag_r.integer_or("texture_height", 160, 16, 4096);
+    flag_r.finish();
+
+    int painting_w = 512, painting_h = 512;
+    if (auto bg = scene.object_if("background")) {
+        painting_w = bg->integer_or("texture_width", painting_w, 1, 4096);
+        painting_h = bg->integer_or("texture_height", painting_h, 1, 4096);
+        bg->finish();
+    }
+
+    Pass pass;
+    pass.width = size.width;
+    pass.height = size.height;
+    pass.clear_colour = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    pass.draws.push_back(background_draw(painting_texture(painting_w, painting_h)));
+
+    DrawCall flag;
+    flag.state.blend = BlendMode::OneSrcAlpha;  // Eq. 9
+    flag.textures.push_back(faroe_flag_texture(flag_tex_w, flag_tex_h));
+    flag.uniforms = {uniform("view_proj", view_proj), uniform("eye", eye), uniform("light", light),
+                     uniform("power", power), uniform("tau1", tau1), uniform("albedo", albedo)};
+    if (variant == "fragment") {
+        flag.vertex = "thin_slab";
+        flag.fragment = "thin_slab";
+    } else if (variant == "vertex") {
+        flag.vertex = "thin_slab_vertex";
+        flag.fragment = "thin_slab_lit";
+    } else if (variant == "host") {
+        flag.vertex = "thin_slab_host";
+        flag.fragment = "thin_slab_lit";
+        flag.host_stage = std::make_shared<ThinSlabHostStage>(eye, light, power, tau1, albedo);
+    } else {
+        flag.vertex = "thin_slab";
+        flag.fragment = "thin_slab_baseline";
+    }
+    flag_mesh(shape, variant == "host", flag);
+    pass.draws.push_back(std::move(flag));
+
+    Frame frame;
+    frame.passes.push_back(std::move(pass));
+    return frame;
+}
+
+}  // namespace st
