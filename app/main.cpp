@@ -56,6 +56,12 @@ int main(int argc, char** argv) {
     golden->add_option("scenes", scenes, "scenes (default: every built-in scene)");
     add_common(golden, common);
 
+    std::string technique;
+    auto* sweep = app.add_subcommand("sweep", "a technique's model along sweeps of its inputs, on both backends");
+    sweep->add_option("technique", technique, "thin-slab")->required()->check(CLI::IsMember({"thin-slab"}));
+    sweep->add_option("--out", out_dir, "output folder (CSV, SVG charts, Markdown)");
+    add_common(sweep, common);
+
     auto* report = app.add_subcommand("report", "every built-in scene on both backends, compared");
     report->add_option("--out", out_dir, "output folder");
     add_common(report, common);
@@ -77,6 +83,7 @@ int main(int argc, char** argv) {
         if (*diff) return st::cmd_diff(diff_a, diff_b, out_png, json);
         if (*golden) return st::cmd_golden(action, scenes, common);
         if (*report) return st::cmd_report(out_dir, common);
+        if (*sweep) return st::cmd_sweep(technique, out_dir, common);
         std::cerr << "shadertwin: no command given (try --help)\n";
         return 2;
     } catch (const std::exception& e) {

@@ -104,6 +104,15 @@ case "$case_name" in
     expect_bad_input "compare unknown scene" "$bin" compare triangles-basic nope
     ;;
 
+  sweep_thin_slab)
+    # No NaN, no break anywhere along the sweeps, on both backends.
+    "$bin" sweep thin-slab --out "$work" >"$work/sweep.md" || { cat "$work/sweep.md"; fail "sweep found a break"; }
+    grep -q "BREAK" "$work/sweep.md" && fail "sweep table marks a break"
+    for f in thin-slab-sweep.csv thin-slab-sweep-mu-mu0.svg thin-slab-sweep.md; do
+      [ -s "$work/$f" ] || fail "sweep wrote no $f"
+    done
+    ;;
+
   *)
     fail "unknown case $case_name"
     ;;
