@@ -23,7 +23,7 @@ CRITERIA = {"coverage_mismatch": 0, "max_diff_8bit": 1, "min_identical_fraction_
 ANGLES = {"backlit": 155, "frontlit": 35}
 # The Lambertian baseline reflects ~8x more than single scattering at tau1 = 2;
 # it gets a dimmer light so that neither row saturates (documented in docs/thin-slab.md).
-POWER = {"fragment": 1500.0, "vertex": 1500.0, "host": 1500.0, "baseline": 500.0}
+POWER = {"fragment": 1500.0, "vertex": 1500.0, "host": 1500.0, "baseline": 300.0}
 
 
 def main():
