@@ -22,6 +22,7 @@ int cmd_diff(const std::string& a, const std::string& b, const std::string& out_
 int cmd_golden(const std::string& action, const std::vector<std::string>& scenes,
                const CommonOptions& common);
 int cmd_report(const std::string& out_dir, const CommonOptions& common);
+int cmd_bench(const std::vector<std::string>& scenes, int frames, bool json, const CommonOptions& common);
 int cmd_sweep(const std::string& technique, const std::string& out_dir, const CommonOptions& common);
 
 // Where the GLSL sources and golden hashes live (set at build time).

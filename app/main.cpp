@@ -56,6 +56,13 @@ int main(int argc, char** argv) {
     golden->add_option("scenes", scenes, "scenes (default: every built-in scene)");
     add_common(golden, common);
 
+    int frames = 100;
+    auto* bench = app.add_subcommand("bench", "frames per second on both backends, interleaved");
+    bench->add_option("scenes", scenes, "built-in scene names or .json paths")->required();
+    bench->add_option("--frames", frames, "measured frames per backend (after warm-up)")->check(CLI::Range(1, 100000));
+    bench->add_flag("--json", json, "one JSON object per scene and backend");
+    add_common(bench, common);
+
     std::string technique;
     auto* sweep = app.add_subcommand("sweep", "a technique's model along sweeps of its inputs, on both backends");
     sweep->add_option("technique", technique, "thin-slab")->required()->check(CLI::IsMember({"thin-slab"}));
@@ -83,6 +90,7 @@ int main(int argc, char** argv) {
         if (*diff) return st::cmd_diff(diff_a, diff_b, out_png, json);
         if (*golden) return st::cmd_golden(action, scenes, common);
         if (*report) return st::cmd_report(out_dir, common);
+        if (*bench) return st::cmd_bench(scenes, frames, json, common);
         if (*sweep) return st::cmd_sweep(technique, out_dir, common);
         std::cerr << "shadertwin: no command given (try --help)\n";
         return 2;

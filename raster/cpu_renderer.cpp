@@ -228,9 +228,13 @@ void CpuRenderer::execute() {
         const Pass& pass = m.frame.passes[pi];
         auto& draws = m.passes[pi];
         const Viewport viewport{0, 0, float(pass.width), float(pass.height), 0, 1};
-        m.result = std::make_unique<Framebuffer>(pass.width, pass.height, pass.clear_colour,
-                                                 pass.clear_depth);
         const auto t0 = Clock::now();
+        // The clear is part of the frame, as glClear is on the GL side; the
+        // allocation is reused from frame to frame.
+        if (m.result && m.result->width == pass.width && m.result->height == pass.height)
+            m.result->clear(pass.clear_colour, pass.clear_depth);
+        else
+            m.result = std::make_unique<Framebuffer>(pass.width, pass.height, pass.clear_colour, pass.clear_depth);
         for (PreparedDraw& d : draws) m.run_vertex_stage(d, viewport);
         const auto t1 = Clock::now();
         m.setup_and_bin(draws, pass, viewport);

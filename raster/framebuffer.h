@@ -3,6 +3,7 @@
 // them; to_image() flips to the top-to-bottom order of st::Image.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -18,6 +19,11 @@ struct Framebuffer {
 
     Framebuffer(int w, int h, glm::vec4 clear_colour, float clear_depth)
         : width(w), height(h), colour(size_t(w) * h, clear_colour), depth(size_t(w) * h, clear_depth) {}
+
+    void clear(glm::vec4 clear_colour, float clear_depth) {
+        std::fill(colour.begin(), colour.end(), clear_colour);
+        std::fill(depth.begin(), depth.end(), clear_depth);
+    }
 
     size_t index(int x, int y) const { return size_t(y) * width + x; }
 

@@ -104,6 +104,22 @@ case "$case_name" in
     expect_bad_input "compare unknown scene" "$bin" compare triangles-basic nope
     ;;
 
+  bench_shape)
+    # The output's shape, never its speed.
+    "$bin" bench triangles-basic --frames 3 --json >"$work/bench.jsonl"
+    [ "$(wc -l <"$work/bench.jsonl")" -eq 2 ] || fail "bench: expected one line per backend"
+    for key in scene backend fps ms_median ms_min ms_max frames; do
+      [ "$(grep -c "\"$key\"" "$work/bench.jsonl")" -eq 2 ] || fail "bench: field $key missing"
+    done
+    grep '"backend":"cpu"' "$work/bench.jsonl" | grep -q '"stages":{' || fail "bench: no cpu stages"
+    for stage in vertex setup_binning rasterization fragment blend_output; do
+      grep '"backend":"cpu"' "$work/bench.jsonl" | grep -q "\"$stage\"" || fail "bench: stage $stage missing"
+    done
+    grep -q '"frames":3' "$work/bench.jsonl" || fail "bench: --frames not honoured"
+    "$bin" bench triangles-basic --frames 2 >"$work/table.txt"
+    grep -q "cpu fps" "$work/table.txt" || fail "bench: no table without --json"
+    ;;
+
   sweep_thin_slab)
     # No NaN, no break anywhere along the sweeps, on both backends.
     "$bin" sweep thin-slab --out "$work" >"$work/sweep.md" || { cat "$work/sweep.md"; fail "sweep found a break"; }

@@ -1,0 +1,44 @@
+// cmd_bench.cpp: `bench`, frames per second on both backends (app/bench.h
+// says how a frame is measured).
+#include <cstdio>
+#include <iostream>
+
+#include "app/bench.h"
+#include "app/commands.h"
+
+namespace st {
+
+int cmd_bench(const std::vector<std::string>& names, int frames, bool json, const CommonOptions& common) {
+    std::vector<Scene> scenes;
+    for (const auto& n : names) scenes.push_back(load_scene(n, common.overrides));
+    set_llvmpipe_threads(common.threads);
+    Backends backends(common.threads, glsl_dir());
+    const auto start = Clock::now();
+    if (!json)
+        std::printf("%-30s %9s %9s %9s %7s %24s %24s | %7s %7s %7s %8s %7s\n", "scene", "size", "cpu fps", "gl fps",
+                    "cpu/gl", "cpu ms med/min/max", "gl ms med/min/max", "vertex", "setup", "raster", "fragment",
+                    "output");
+    for (size_t i = 0; i < scenes.size(); ++i) {
+        if (ms_between(start, Clock::now()) > 2000.0)
+            std::fprintf(stderr, "bench: %zu/%zu %s\n", i + 1, scenes.size(), scenes[i].name.c_str());
+        const BenchResult r = bench_scene(scenes[i], backends, frames, std::max(2, frames / 10));
+        if (json) {
+            std::cout << bench_json(r, Backend::Cpu).dump() << "\n" << bench_json(r, Backend::Gl).dump() << std::endl;
+            continue;
+        }
+        char size[32], cpu_ms[64], gl_ms[64];
+        std::snprintf(size, sizeof size, "%dx%d", r.width, r.height);
+        std::snprintf(cpu_ms, sizeof cpu_ms, "%.3f/%.3f/%.3f", r.cpu.ms_median, r.cpu.ms_min, r.cpu.ms_max);
+        std::snprintf(gl_ms, sizeof gl_ms, "%.3f/%.3f/%.3f", r.gl.ms_median, r.gl.ms_min, r.gl.ms_max);
+        std::printf("%-30s %9s %9.1f %9.1f %7.2f %24s %24s | %7.3f %7.3f %7.3f %8.3f %7.3f\n", r.scene.c_str(), size,
+                    r.cpu.fps(), r.gl.fps(), r.cpu.fps() / r.gl.fps(), cpu_ms, gl_ms, r.cpu_stages.vertex_ms,
+                    r.cpu_stages.setup_ms, r.cpu_stages.raster_ms, r.cpu_stages.fragment_ms, r.cpu_stages.output_ms);
+        std::fflush(stdout);
+    }
+    if (!json)
+        std::printf("frames %d per backend (medians), cpu threads %d, LP_NUM_THREADS %s\n", frames, common.threads,
+                    std::getenv("LP_NUM_THREADS") ? std::getenv("LP_NUM_THREADS") : "unset");
+    return 0;
+}
+
+}  // namespace st

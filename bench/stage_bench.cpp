@@ -1,0 +1,141 @@
+// stage_bench.cpp: Google Benchmark micro-benchmarks of the CPU pipeline's
+// stages, one at a time, with items-per-second counters (vertices,
+// triangles, pixels, samples). Whole frames: frame_bench in this folder.
+#include <random>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "frame/frame.h"
+#include "kernels/program.h"
+#include "raster/attribute_setup.h"
+#include "raster/fragment_inputs.h"
+#include "raster/output_merge.h"
+#include "raster/sampler2d.h"
+#include "raster/tile_raster.h"
+#include "raster/triangle_setup.h"
+#include "raster/viewport.h"
+
+namespace st {
+namespace {
+
+std::vector<glm::vec4> random_clip_positions(int n) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f), w(0.5f, 4.0f);
+    std::vector<glm::vec4> out;
+    for (int i = 0; i < n; ++i) {
+        const float ww = w(rng);
+        out.emplace_back(u(rng) * ww, u(rng) * ww, u(rng) * ww, ww);
+    }
+    return out;
+}
+
+void BM_ViewportTransform(benchmark::State& state) {
+    const auto pos = random_clip_positions(4096);
+    const Viewport vp{0, 0, 512, 512, 0, 1};
+    for (auto _ : state)
+        for (const auto& p : pos) benchmark::DoNotOptimize(to_window(p, vp));
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(pos.size()));
+    state.SetLabel("vertices");
+}
+BENCHMARK(BM_ViewportTransform);
+
+// Setup of triangles about 20 pixels across with 3 varying slots.
+void BM_TriangleSetup(benchmark::State& state) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(10.0f, 500.0f), d(-20.0f, 20.0f);
+    const glm::vec4 varyings[3][3] = {};
+    std::vector<SetupVertex> verts;
+    for (int i = 0; i < 3000; ++i) {
+        const float x = u(rng), y = u(rng);
+        verts.push_back({WindowPos{x + d(rng), y + d(rng), 0.5f, 1.0f}, varyings[i % 3]});
+    }
+    std::vector<Plane> planes;
+    planes.reserve(1 << 16);
+    for (auto _ : state) {
+        planes.clear();
+        for (size_t i = 0; i + 2 < verts.size(); i += 3) {
+            SetupTriangle tri;
+            benchmark::DoNotOptimize(setup_triangle(verts[i], verts[i + 1], verts[i + 2], 3, 512, 512, tri, planes));
+        }
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * 1000);
+    state.SetLabel("triangles");
+}
+BENCHMARK(BM_TriangleSetup);
+
+// Coverage of one 64x64 tile by a triangle covering about half of it.
+void BM_RasterizeTile(benchmark::State& state) {
+    const glm::vec4 none[1] = {};
+    SetupTriangle tri;
+    std::vector<Plane> planes;
+    setup_triangle({WindowPos{0.3f, 0.2f, 0.5f, 1}, none}, {WindowPos{63.7f, 1.1f, 0.5f, 1}, none},
+                   {WindowPos{2.2f, 63.9f, 0.5f, 1}, none}, 0, 64, 64, tri, planes);
+    std::vector<QuadCoverage> quads;
+    long pixels = 0;
+    for (auto _ : state) {
+        quads.clear();
+        rasterize_in_tile(tri, TileRect{0, 0, 64, 64}, quads);
+        benchmark::DoNotOptimize(quads.data());
+        pixels += 64 * 64;
+    }
+    state.SetItemsProcessed(pixels);
+    state.SetLabel("tile pixels");
+}
+BENCHMARK(BM_RasterizeTile);
+
+// Perspective-correct interpolation of 3 varying slots for one quad.
+void BM_InterpolateQuad(benchmark::State& state) {
+    std::vector<Plane> planes(2 + 12, Plane{0.5f, 0.01f, 0.02f});
+    FragmentQuad quad;
+    QuadCoverage q{100, 200, 0xf};
+    for (auto _ : state) {
+        interpolate_quad(planes.data(), 3, q, true, quad);
+        benchmark::DoNotOptimize(quad);
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * 4);
+    state.SetLabel("pixels");
+}
+BENCHMARK(BM_InterpolateQuad);
+
+void BM_BlendOneSrcAlpha(benchmark::State& state) {
+    std::vector<glm::vec4> dst(4096, glm::vec4(0.3f, 0.4f, 0.5f, 1.0f));
+    const glm::vec4 src(0.1f, 0.2f, 0.3f, 0.4f);
+    for (auto _ : state) {
+        for (auto& d : dst) d = blend(BlendMode::OneSrcAlpha, src, d);
+        benchmark::DoNotOptimize(dst.data());
+    }
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(dst.size()));
+    state.SetLabel("pixels");
+}
+BENCHMARK(BM_BlendOneSrcAlpha);
+
+Texture noise_texture(TextureFormat format) {
+    Texture t;
+    t.format = format;
+    t.width = t.height = 256;
+    std::mt19937 rng(1);
+    for (int i = 0; i < 256 * 256 * 4; ++i) {
+        if (format == TextureFormat::RGBA8) t.texels8.push_back(uint8_t(rng()));
+        else t.texels32.push_back(float(rng() & 0xffff) / 65536.0f);
+    }
+    return t;
+}
+
+void BM_SampleBilinear(benchmark::State& state, TextureFormat format) {
+    const Texture t = noise_texture(format);
+    const Sampler2D s(t);
+    std::vector<glm::vec2> uv;
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-1.0f, 2.0f);
+    for (int i = 0; i < 4096; ++i) uv.emplace_back(u(rng), u(rng));
+    for (auto _ : state)
+        for (const auto& c : uv) benchmark::DoNotOptimize(s.sample(c));
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(uv.size()));
+    state.SetLabel("samples");
+}
+BENCHMARK_CAPTURE(BM_SampleBilinear, rgba8, TextureFormat::RGBA8);
+BENCHMARK_CAPTURE(BM_SampleBilinear, rgba32f, TextureFormat::RGBA32F);
+
+}  // namespace
+}  // namespace st
