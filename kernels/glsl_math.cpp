@@ -34,8 +34,8 @@ float exp2_polynomial(float x) {
 
 float exp2(float x) {
     if (std::isnan(x)) return x;
-    x = std::fmin(128.0f, x);
-    x = std::fmax(-126.99999f, x);
+    x = x < 128.0f ? x : 128.0f;  // NaN returned above
+    x = x > -126.99999f ? x : -126.99999f;
     const float ipart = std::floor(x);
     const float fpart = x - ipart;
     // 2^ipart through the exponent field; ipart = 128 gives +inf's pattern.

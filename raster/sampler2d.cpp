@@ -10,14 +10,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include <xmmintrin.h>
+
 namespace st {
 
 namespace {
 
 bool is_pot(int n) { return (n & (n - 1)) == 0; }
 
-// cvtps2dq: round to nearest, ties to even.
-int iround(float x) { return int(std::nearbyint(x)); }
+// cvtss2si: round to nearest, ties to even (the default MXCSR mode), as
+// llvmpipe's lp_build_iround.
+inline int iround(float x) { return _mm_cvtss_si32(_mm_set_ss(x)); }
 
 // Float texel coordinates for linear filtering along one axis: the lower
 // texel i0, the upper i1 and the weight of i1 (wrap_linear in
@@ -27,7 +30,7 @@ struct LinearTaps {
     float weight;
 };
 
-LinearTaps linear_taps_float(float s, int size, TextureWrap wrap) {
+inline __attribute__((always_inline)) LinearTaps linear_taps_float(float s, int size, TextureWrap wrap) {
     const float size_f = float(size);
     LinearTaps t;
     if (wrap == TextureWrap::ClampToEdge) {
@@ -63,7 +66,7 @@ struct LinearTaps8 {
     int i0, i1, weight;
 };
 
-LinearTaps8 linear_taps_fixed(float s, int size, TextureWrap wrap) {
+inline __attribute__((always_inline)) LinearTaps8 linear_taps_fixed(float s, int size, TextureWrap wrap) {
     LinearTaps8 t;
     if (wrap == TextureWrap::Repeat && !is_pot(size)) {
         float u = s - std::floor(s);
