@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "app/backends.h"
+#include "app/bench.h"
 #include "app/commands.h"
 #include "app/comparison.h"
 #include "app/provenance.h"
@@ -24,6 +25,12 @@ std::string fmt(double v, int precision = 6) {
     return s.str();
 }
 
+std::string fixed(double v, int decimals) {
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(decimals) << v;
+    return s.str();
+}
+
 std::string html_escape(const std::string& in) {
     std::string out;
     for (char ch : in) {
@@ -36,6 +43,23 @@ std::string html_escape(const std::string& in) {
         }
     }
     return out;
+}
+
+std::string cost_markdown(const std::vector<BenchResult>& costs, int frames) {
+    std::ostringstream md;
+    if (costs.empty()) return "";
+    md << "\n## Cost\n\nFrames per second from the median of " << frames
+       << " frames per backend, backends interleaved (`shadertwin bench` rules); CPU threads "
+       << costs.front().cpu_threads << ", LP_NUM_THREADS " << costs.front().gl_threads
+       << ". CPU stage medians in ms.\n\n"
+       << "| scene | size | cpu fps | gl fps | cpu / gl | vertex | setup/binning | raster | fragment | blend/output |\n"
+       << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    for (const auto& r : costs)
+        md << "| " << r.scene << " | " << r.width << "x" << r.height << " | " << fixed(r.cpu.fps(), 1) << " | "
+           << fixed(r.gl.fps(), 1) << " | " << fixed(r.cpu.fps() / r.gl.fps(), 2) << " | " << fmt(r.cpu_stages.vertex_ms, 3)
+           << " | " << fmt(r.cpu_stages.setup_ms, 3) << " | " << fmt(r.cpu_stages.raster_ms, 3) << " | "
+           << fmt(r.cpu_stages.fragment_ms, 3) << " | " << fmt(r.cpu_stages.output_ms, 3) << " |\n";
+    return md.str();
 }
 
 std::string markdown(const std::vector<SceneComparison>& results, const std::string& renderer) {
@@ -59,7 +83,8 @@ std::string markdown(const std::vector<SceneComparison>& results, const std::str
     return md.str();
 }
 
-std::string html(const std::vector<SceneComparison>& results, const std::string& renderer) {
+// The cost table goes in as preformatted Markdown: readable as it is.
+std::string html(const std::vector<SceneComparison>& results, const std::string& renderer, const std::string& cost) {
     std::ostringstream h;
     h << "<!doctype html><html><head><meta charset=\"utf-8\"><title>shadertwin report</title><style>"
          "body{font-family:sans-serif;margin:2em}section{border-top:1px solid #ccc;padding:1em 0}"
@@ -86,31 +111,36 @@ std::string html(const std::vector<SceneComparison>& results, const std::string&
                 h << "<tr><th>" << html_escape(key) << "</th><td>" << html_escape(value.dump()) << "</td></tr>";
         h << "</table></section>";
     }
+    if (!cost.empty()) h << "<section><h2>Cost</h2><pre>" << html_escape(cost) << "</pre></section>";
     h << "</body></html>\n";
     return h.str();
 }
 
 }  // namespace
 
-int cmd_report(const std::string& out_dir, const CommonOptions& common) {
+int cmd_report(const std::string& out_dir, int frames, const CommonOptions& common) {
     std::vector<Scene> scenes;
     for (const auto& n : builtin_scene_names()) scenes.push_back(load_scene(n, common.overrides));
     std::error_code ec;
     std::filesystem::create_directories(out_dir, ec);
     if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
 
+    set_llvmpipe_threads(common.threads);
     Backends backends(common.threads, glsl_dir());
     std::vector<SceneComparison> results;
+    std::vector<BenchResult> costs;
     for (const Scene& s : scenes) {
         std::cerr << "report: " << s.name << "\n";
         results.push_back(compare_scene(s, backends, out_dir));
+        if (frames > 0) costs.push_back(bench_scene(s, backends, frames, 2));
     }
     // Failures first, then by name.
     std::stable_sort(results.begin(), results.end(),
                      [](const SceneComparison& a, const SceneComparison& b) { return !a.pass() && b.pass(); });
     const std::string renderer = backends.gl_renderer();
-    write_text_file(out_dir + "/index.html", html(results, renderer));
-    std::cout << markdown(results, renderer);
+    const std::string cost = cost_markdown(costs, frames);
+    write_text_file(out_dir + "/index.html", html(results, renderer, cost));
+    std::cout << markdown(results, renderer) << cost;
     const bool all_pass = std::all_of(results.begin(), results.end(), [](auto& c) { return c.pass(); });
     return all_pass ? 0 : 1;
 }

@@ -21,7 +21,7 @@ int cmd_compare(const std::vector<std::string>& scenes, const std::string& out_d
 int cmd_diff(const std::string& a, const std::string& b, const std::string& out_png, bool json);
 int cmd_golden(const std::string& action, const std::vector<std::string>& scenes,
                const CommonOptions& common);
-int cmd_report(const std::string& out_dir, const CommonOptions& common);
+int cmd_report(const std::string& out_dir, int frames, const CommonOptions& common);
 int cmd_bench(const std::vector<std::string>& scenes, int frames, bool json, const CommonOptions& common);
 int cmd_sweep(const std::string& technique, const std::string& out_dir, const CommonOptions& common);
 

@@ -69,8 +69,11 @@ int main(int argc, char** argv) {
     sweep->add_option("--out", out_dir, "output folder (CSV, SVG charts, Markdown)");
     add_common(sweep, common);
 
-    auto* report = app.add_subcommand("report", "every built-in scene on both backends, compared");
+    int report_frames = 10;
+    auto* report = app.add_subcommand("report", "every built-in scene on both backends, compared and timed");
     report->add_option("--out", out_dir, "output folder");
+    report->add_option("--frames", report_frames, "frames per backend for the cost table (0: none)")
+        ->check(CLI::Range(0, 100000));
     add_common(report, common);
 
     try {
@@ -89,7 +92,7 @@ int main(int argc, char** argv) {
         if (*compare) return st::cmd_compare(scenes, out_dir, json, common);
         if (*diff) return st::cmd_diff(diff_a, diff_b, out_png, json);
         if (*golden) return st::cmd_golden(action, scenes, common);
-        if (*report) return st::cmd_report(out_dir, common);
+        if (*report) return st::cmd_report(out_dir, report_frames, common);
         if (*bench) return st::cmd_bench(scenes, frames, json, common);
         if (*sweep) return st::cmd_sweep(technique, out_dir, common);
         std::cerr << "shadertwin: no command given (try --help)\n";
