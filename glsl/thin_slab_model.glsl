@@ -52,24 +52,34 @@ float point_light_irradiance(float power, float mu0, float r2) {
     return power * INV_4PI * mu0 / r2;
 }
 
-// Eq. 7 / 8 with Eq. 4 / 5 and Eq. 6 at surface point p with unit normal n:
-// rgb = the single-scattered radiance L_source, a = alpha = e^(-tau1/mu), the
-// direct transmission that Eq. 9's blend applies to the destination. The
-// normal is turned towards the light (mu0 > 0); the slab is front-lit when
-// the eye is on the light's side.
-vec4 thin_slab(vec3 p, vec3 n, vec3 eye, vec3 light, float power, float tau1, vec3 albedo) {
+// The geometry of Eq. 4-8 at surface point p with unit normal n: the squared
+// light distance, mu0 towards the light (the normal turned so that mu0 > 0,
+// Sec. 4), mu towards the eye, and whether the eye is on the light's side.
+struct SlabGeometry {
+    float r2;
+    float mu0;
+    float mu;
+    bool frontlit;
+};
+
+SlabGeometry slab_geometry(vec3 p, vec3 n, vec3 eye, vec3 light) {
     vec3 to_light = light - p;
     float r2 = max(dot(to_light, to_light), R2_MIN);
     vec3 l = to_light * inversesqrt(r2);
     vec3 w = normalize(eye - p);
     float cos_l = dot(n, l);
     float cos_v = dot(n, w);
-    float mu0 = max(abs(cos_l), MU_MIN);
-    float mu = max(abs(cos_v), MU_MIN);
-    bool frontlit = (cos_l >= 0.0) == (cos_v >= 0.0);
-    float factor = frontlit ? frontlit_factor(tau1, mu, mu0) : backlit_factor(tau1, mu, mu0);
-    float radiance = point_light_irradiance(power, mu0, r2) * INV_4PI * factor;
-    float alpha = exp(-tau1 / mu);
+    return SlabGeometry(r2, max(abs(cos_l), MU_MIN), max(abs(cos_v), MU_MIN), (cos_l >= 0.0) == (cos_v >= 0.0));
+}
+
+// Eq. 7 / 8 with Eq. 4 / 5 and Eq. 6: rgb = the single-scattered radiance
+// L_source, a = alpha = e^(-tau1/mu), the direct transmission that Eq. 9's
+// blend applies to the destination. Front-lit: Eq. 4; back-lit: Eq. 5.
+vec4 thin_slab(vec3 p, vec3 n, vec3 eye, vec3 light, float power, float tau1, vec3 albedo) {
+    SlabGeometry g = slab_geometry(p, n, eye, light);
+    float factor = g.frontlit ? frontlit_factor(tau1, g.mu, g.mu0) : backlit_factor(tau1, g.mu, g.mu0);
+    float radiance = point_light_irradiance(power, g.mu0, g.r2) * INV_4PI * factor;
+    float alpha = exp(-tau1 / g.mu);
     return vec4(albedo * radiance, alpha);
 }
 
@@ -77,14 +87,7 @@ vec4 thin_slab(vec3 p, vec3 n, vec3 eye, vec3 light, float power, float tau1, ve
 // point light, rgb = albedo E / pi, when the eye is on the light's side and
 // black when back-lit; the caller blends it with a constant alpha.
 vec3 lambert_baseline(vec3 p, vec3 n, vec3 eye, vec3 light, float power, vec3 albedo) {
-    vec3 to_light = light - p;
-    float r2 = max(dot(to_light, to_light), R2_MIN);
-    vec3 l = to_light * inversesqrt(r2);
-    vec3 w = normalize(eye - p);
-    float cos_l = dot(n, l);
-    float cos_v = dot(n, w);
-    float mu0 = max(abs(cos_l), MU_MIN);
-    bool frontlit = (cos_l >= 0.0) == (cos_v >= 0.0);
-    float radiance = frontlit ? point_light_irradiance(power, mu0, r2) * INV_PI : 0.0;
+    SlabGeometry g = slab_geometry(p, n, eye, light);
+    float radiance = g.frontlit ? point_light_irradiance(power, g.mu0, g.r2) * INV_PI : 0.0;
     return albedo * radiance;
 }

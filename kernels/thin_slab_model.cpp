@@ -36,34 +36,30 @@ float point_light_irradiance(float power, float mu0, float r2) {
     return power * INV_4PI * mu0 / r2;
 }
 
-glm::vec4 thin_slab(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye, const glm::vec3& light,
-                    float power, float tau1, const glm::vec3& albedo) {
+SlabGeometry slab_geometry(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye, const glm::vec3& light) {
     glm::vec3 to_light = light - p;
     float r2 = std::fmax(glsl::dot(to_light, to_light), R2_MIN);
     glm::vec3 l = to_light * glsl::inversesqrt(r2);
     glm::vec3 w = glsl::normalize(eye - p);
     float cos_l = glsl::dot(n, l);
     float cos_v = glsl::dot(n, w);
-    float mu0 = std::fmax(std::abs(cos_l), MU_MIN);
-    float mu = std::fmax(std::abs(cos_v), MU_MIN);
-    bool frontlit = (cos_l >= 0.0f) == (cos_v >= 0.0f);
-    float factor = frontlit ? frontlit_factor(tau1, mu, mu0) : backlit_factor(tau1, mu, mu0);
-    float radiance = point_light_irradiance(power, mu0, r2) * INV_4PI * factor;
-    float alpha = glsl::exp(-tau1 / mu);
+    return SlabGeometry{r2, std::fmax(std::abs(cos_l), MU_MIN), std::fmax(std::abs(cos_v), MU_MIN),
+                        (cos_l >= 0.0f) == (cos_v >= 0.0f)};
+}
+
+glm::vec4 thin_slab(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye, const glm::vec3& light,
+                    float power, float tau1, const glm::vec3& albedo) {
+    SlabGeometry g = slab_geometry(p, n, eye, light);
+    float factor = g.frontlit ? frontlit_factor(tau1, g.mu, g.mu0) : backlit_factor(tau1, g.mu, g.mu0);
+    float radiance = point_light_irradiance(power, g.mu0, g.r2) * INV_4PI * factor;
+    float alpha = glsl::exp(-tau1 / g.mu);
     return glm::vec4(albedo * radiance, alpha);
 }
 
 glm::vec3 lambert_baseline(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye,
                            const glm::vec3& light, float power, const glm::vec3& albedo) {
-    glm::vec3 to_light = light - p;
-    float r2 = std::fmax(glsl::dot(to_light, to_light), R2_MIN);
-    glm::vec3 l = to_light * glsl::inversesqrt(r2);
-    glm::vec3 w = glsl::normalize(eye - p);
-    float cos_l = glsl::dot(n, l);
-    float cos_v = glsl::dot(n, w);
-    float mu0 = std::fmax(std::abs(cos_l), MU_MIN);
-    bool frontlit = (cos_l >= 0.0f) == (cos_v >= 0.0f);
-    float radiance = frontlit ? point_light_irradiance(power, mu0, r2) * INV_PI : 0.0f;
+    SlabGeometry g = slab_geometry(p, n, eye, light);
+    float radiance = g.frontlit ? point_light_irradiance(power, g.mu0, g.r2) * INV_PI : 0.0f;
     return albedo * radiance;
 }
 

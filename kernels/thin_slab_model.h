@@ -19,6 +19,11 @@ float expm1_over_x(float d);
 float frontlit_factor(float tau1, float mu, float mu0);   // Eq. 4 bracket
 float backlit_factor(float tau1, float mu, float mu0);    // Eq. 5 bracket
 float point_light_irradiance(float power, float mu0, float r2);  // Eq. 6
+struct SlabGeometry {  // the GLSL struct of the same name
+    float r2, mu0, mu;
+    bool frontlit;
+};
+SlabGeometry slab_geometry(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye, const glm::vec3& light);
 glm::vec4 thin_slab(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye, const glm::vec3& light,
                     float power, float tau1, const glm::vec3& albedo);  // Eq. 7/8 + alpha (Eq. 9)
 glm::vec3 lambert_baseline(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye,
