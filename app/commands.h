@@ -25,6 +25,18 @@ int cmd_report(const std::string& out_dir, int frames, const CommonOptions& comm
 int cmd_bench(const std::vector<std::string>& scenes, int frames, bool json, const CommonOptions& common);
 int cmd_sweep(const std::string& technique, const std::string& out_dir, const CommonOptions& common);
 
+// Single-layer optics options of `slab` and `profile` (see docs/optics.md).
+struct SlabOptions {
+    std::string model = "multipole";  // multipole | dipole
+    double sigma_a = -1, sigma_s = -1, g = 0, eta = 1.0, eta_below = -1;
+    std::string thickness;  // mm or "inf"
+    int pairs = -1;         // -1: from the tolerance
+    double tolerance = 1e-6;
+    bool json = false;
+};
+int cmd_slab(const SlabOptions& options);
+int cmd_profile(const SlabOptions& options, const std::string& out, double r_max, int samples);
+
 // Where the GLSL sources and golden hashes live (set at build time).
 std::string glsl_dir();
 std::string golden_file();

@@ -63,6 +63,31 @@ int main(int argc, char** argv) {
     bench->add_flag("--json", json, "one JSON object per scene and backend");
     add_common(bench, common);
 
+    st::SlabOptions slab_options;
+    auto add_slab_options = [&slab_options](CLI::App* cmd) {
+        cmd->add_option("--model", slab_options.model, "multipole or dipole")
+            ->check(CLI::IsMember({"multipole", "dipole"}));
+        cmd->add_option("--sigma-a", slab_options.sigma_a, "absorption coefficient, 1/mm")->required();
+        cmd->add_option("--sigma-s", slab_options.sigma_s, "scattering coefficient, 1/mm")->required();
+        cmd->add_option("--g", slab_options.g, "Henyey-Greenstein mean cosine");
+        cmd->add_option("--eta", slab_options.eta, "index of the slab relative to the medium above");
+        cmd->add_option("--eta-below", slab_options.eta_below, "relative to the medium below (default: --eta)");
+        cmd->add_option("--thickness", slab_options.thickness, "mm, or inf")->required();
+        auto* pairs = cmd->add_option("--pairs", slab_options.pairs, "dipole pairs per side (multipole)");
+        cmd->add_option("--tolerance", slab_options.tolerance, "relative tolerance that sets the pairs")->excludes(pairs);
+    };
+    auto* slab = app.add_subcommand("slab", "total diffuse R and T of a slab (dipole or multipole)");
+    add_slab_options(slab);
+    slab->add_flag("--json", slab_options.json, "one JSON object");
+    std::string profile_out;
+    double r_max = 10.0;
+    int samples = 256;
+    auto* profile = app.add_subcommand("profile", "radial R(r) and T(r) tables of a slab (CSV, or EXR)");
+    add_slab_options(profile);
+    profile->add_option("--out", profile_out, "FILE.csv or FILE.exr")->required();
+    profile->add_option("--r-max", r_max, "largest radius, mm");
+    profile->add_option("--samples", samples, "number of radii");
+
     std::string technique;
     auto* sweep = app.add_subcommand("sweep", "a technique's model along sweeps of its inputs, on both backends");
     sweep->add_option("technique", technique, "thin-slab")->required()->check(CLI::IsMember({"thin-slab"}));
@@ -93,6 +118,11 @@ int main(int argc, char** argv) {
         if (*diff) return st::cmd_diff(diff_a, diff_b, out_png, json);
         if (*golden) return st::cmd_golden(action, scenes, common);
         if (*report) return st::cmd_report(out_dir, report_frames, common);
+        if (*slab || *profile) {
+            if (slab_options.eta_below < 0) slab_options.eta_below = slab_options.eta;
+            if (*slab) return st::cmd_slab(slab_options);
+            return st::cmd_profile(slab_options, profile_out, r_max, samples);
+        }
         if (*bench) return st::cmd_bench(scenes, frames, json, common);
         if (*sweep) return st::cmd_sweep(technique, out_dir, common);
         std::cerr << "shadertwin: no command given (try --help)\n";

@@ -120,6 +120,36 @@ case "$case_name" in
     grep -q "cpu fps" "$work/table.txt" || fail "bench: no table without --json"
     ;;
 
+  slab)
+    # Output shape and the notes' multipole example (R settles at 49.7 %).
+    line=$("$bin" slab --sigma-a 0.00127 --sigma-s 0.99873 --thickness 2 --json)
+    echo "$line"
+    for key in R T T_direct dipole_pairs; do echo "$line" | grep -q "\"$key\"" || fail "slab: no $key"; done
+    echo "$line" | grep -q '"R":0.497' || fail "slab: R is not 0.497"
+    "$bin" slab --model dipole --sigma-a 0.00127 --sigma-s 0.99873 --thickness inf | grep -q "^R 0.9017" || fail "dipole R"
+    expect_slab_error() {
+      local what="$1"; shift
+      set +e; "$bin" slab "$@" >"$work/stdout" 2>"$work/stderr"; local rc=$?; set -e
+      [ "$rc" -eq 2 ] || fail "slab $what: exit $rc"
+      [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "slab $what: stderr not one line"
+      echo "ok   slab $what: $(cat "$work/stderr")"
+    }
+    expect_slab_error "negative sigma_a" --sigma-a -1 --sigma-s 1 --thickness 1
+    expect_slab_error "NaN sigma_s" --sigma-a 1 --sigma-s nan --thickness 1
+    expect_slab_error "zero thickness" --sigma-a 1 --sigma-s 1 --thickness 0
+    expect_slab_error "eta 0" --sigma-a 1 --sigma-s 1 --thickness 1 --eta 0
+    expect_slab_error "g = 1" --sigma-a 1 --sigma-s 1 --thickness 1 --g 1
+    expect_slab_error "empty medium" --sigma-a 0 --sigma-s 0 --thickness 1
+    expect_slab_error "pairs and tolerance" --sigma-a 1 --sigma-s 1 --thickness 1 --pairs 3 --tolerance 1e-3
+    # profile writes whole files only
+    "$bin" profile --sigma-a 0.01 --sigma-s 1 --thickness 2 --out "$work/p.csv" 2>/dev/null
+    head -1 "$work/p.csv" | grep -q "^r_mm,R,T$" || fail "profile: CSV header"
+    "$bin" profile --sigma-a 0.01 --sigma-s 1 --thickness 2 --out "$work/p.exr" 2>/dev/null
+    [ -s "$work/p.exr" ] || fail "profile: no EXR"
+    set +e; "$bin" profile --sigma-a 0.01 --sigma-s 1 --thickness 2 --out "$work/nodir/p.csv" 2>/dev/null; rc=$?; set -e
+    [ "$rc" -eq 2 ] || fail "profile to a missing folder: exit $rc"
+    ;;
+
   sweep_thin_slab)
     # No NaN, no break anywhere along the sweeps, on both backends.
     "$bin" sweep thin-slab --out "$work" >"$work/sweep.md" || { cat "$work/sweep.md"; fail "sweep found a break"; }

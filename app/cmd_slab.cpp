@@ -1,0 +1,123 @@
+// cmd_slab.cpp: `slab`, the diffuse reflectance and transmittance of one
+// layer by the dipole or multipole model (optics/), and `profile`, its radial
+// R(r) and T(r) tables.
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/commands.h"
+#include "image/image_io.h"
+#include "optics/multipole.h"
+#include "scene/input_error.h"
+
+namespace st {
+
+namespace {
+
+// Normal-incidence Fresnel reflectance of an interface with relative index eta.
+double fresnel_normal(double eta) {
+    const double r = (eta - 1.0) / (eta + 1.0);
+    return r * r;
+}
+
+optics::Slab validated(const SlabOptions& o) {
+    auto finite_nonneg = [](double v, const char* name) {
+        if (!std::isfinite(v) || v < 0.0) throw InputError(std::string(name) + " must be a finite number >= 0");
+    };
+    finite_nonneg(o.sigma_a, "--sigma-a");
+    finite_nonneg(o.sigma_s, "--sigma-s");
+    if (!(o.g > -1.0 && o.g < 1.0)) throw InputError("--g must lie in (-1, 1)");
+    if (!(o.eta > 0.0) || !std::isfinite(o.eta)) throw InputError("--eta must be a finite number > 0");
+    if (!(o.eta_below > 0.0) || !std::isfinite(o.eta_below))
+        throw InputError("--eta-below must be a finite number > 0");
+    optics::Slab s;
+    s.sigma_a = o.sigma_a;
+    s.sigma_s = o.sigma_s;
+    s.g = o.g;
+    s.eta = o.eta;
+    s.eta_below = o.eta_below;
+    if (o.thickness == "inf") {
+        s.thickness = INFINITY;
+    } else {
+        double d = 0;
+        std::istringstream in(o.thickness);
+        if (!(in >> d) || !in.eof() || !std::isfinite(d) || d <= 0.0)
+            throw InputError("--thickness must be a number > 0 (mm) or 'inf'");
+        s.thickness = d;
+    }
+    if (!(s.sigma_t_reduced() > 0.0)) throw InputError("the medium neither scatters nor absorbs (sigma_t' = 0)");
+    if (!(o.tolerance > 0.0 && o.tolerance < 1.0)) throw InputError("--tolerance must lie in (0, 1)");
+    if (o.pairs < -1 || o.pairs > 1000000) throw InputError("--pairs must lie in [0, 1000000]");
+    return s;
+}
+
+optics::Multipole build(const optics::Slab& s, const SlabOptions& o) {
+    if (o.model == "dipole") return optics::Multipole(s, 0);
+    if (o.pairs >= 0) return optics::Multipole(s, o.pairs);
+    return optics::Multipole::converged(s, o.tolerance);
+}
+
+}  // namespace
+
+int cmd_slab(const SlabOptions& o) {
+    const optics::Slab s = validated(o);
+    const optics::Multipole m = build(s, o);
+    // Unscattered light at normal incidence: refracted in, attenuated by
+    // sigma_t over the thickness, refracted out (interreflections ignored).
+    const double t_direct = s.semi_infinite() ? 0.0
+                                              : (1.0 - fresnel_normal(s.eta)) * (1.0 - fresnel_normal(s.eta_below)) *
+                                                    std::exp(-s.sigma_t() * s.thickness);
+    nlohmann::json j = {{"model", o.model},
+                        {"R", m.total_reflectance()},
+                        {"T", m.total_transmittance()},
+                        {"T_direct", t_direct},
+                        {"dipole_pairs", m.dipoles()},
+                        {"sigma_tr", s.sigma_tr()},
+                        {"albedo_reduced", s.albedo_reduced()}};
+    if (o.model == "multipole" && o.pairs < 0) j["tolerance"] = o.tolerance;
+    if (o.json) {
+        std::cout << j.dump() << std::endl;
+    } else {
+        std::cout << std::setprecision(6) << "R " << m.total_reflectance() << "\nT " << m.total_transmittance()
+                  << "\nT_direct " << t_direct << "\ndipole_pairs " << m.dipoles() << "\n";
+    }
+    return 0;
+}
+
+int cmd_profile(const SlabOptions& o, const std::string& out, double r_max, int samples) {
+    const optics::Slab s = validated(o);
+    if (out.empty()) throw InputError("profile needs --out FILE (.csv or .exr)");
+    if (!(r_max > 0.0) || !std::isfinite(r_max)) throw InputError("--r-max must be a number > 0 (mm)");
+    if (samples < 2 || samples > 1000000) throw InputError("--samples must lie in [2, 1000000]");
+    const optics::Multipole m = build(s, o);
+    const bool exr = out.size() > 4 && out.compare(out.size() - 4, 4, ".exr") == 0;
+    if (exr) {
+        // One row, one pixel per radius: channels R(r), T(r), r, 1.
+        Image image(samples, 1);
+        for (int i = 0; i < samples; ++i) {
+            const double r = r_max * i / (samples - 1);
+            float* p = image.pixel(i, 0);
+            p[0] = float(m.reflectance(r));
+            p[1] = float(m.transmittance(r));
+            p[2] = float(r);
+            p[3] = 1.0f;
+        }
+        write_exr(out, image, {{"model", o.model}, {"dipole_pairs", std::to_string(m.dipoles())},
+                               {"channels", "R(r) per mm^2, T(r) per mm^2, r in mm"}});
+    } else {
+        std::ostringstream csv;
+        csv << std::setprecision(9) << "r_mm,R,T\n";
+        for (int i = 0; i < samples; ++i) {
+            const double r = r_max * i / (samples - 1);
+            csv << r << ',' << m.reflectance(r) << ',' << m.transmittance(r) << '\n';
+        }
+        write_text_file(out, csv.str());
+    }
+    std::cerr << "profile: " << samples << " radii to " << r_max << " mm, " << m.dipoles() << " dipoles\n";
+    return 0;
+}
+
+}  // namespace st

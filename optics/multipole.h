@@ -1,0 +1,49 @@
+// multipole.h: diffuse reflectance and transmittance of a slab by the dipole
+// (Jensen et al. 2001) and the multipole (Donner and Jensen 2005, Eq. 11-16)
+// diffusion approximations: radial profiles R(r), T(r) and their totals.
+//
+// Sign convention (../shared/notes/techniques.md): source positions are signed
+// depths below the top surface, z > 0 inside the slab; the virtual source of
+// the central dipole sits at z = -(l + 2 z_b) above it. Each pair contributes
+// +real - virtual, so the virtual source's negative z adds to R(r), as the
+// dipole of Jensen et al. does with a positive z_v. T(r) uses (d - z) both as
+// the factor and inside the distance.
+#pragma once
+
+#include <vector>
+
+#include "optics/slab.h"
+
+namespace st::optics {
+
+struct SourcePair {
+    double z_real, z_virtual;  // signed depths, mm
+};
+
+class Multipole {
+public:
+    // `pairs_per_side` = n of Eq. 11/16: 2n + 1 dipoles (n = 0: the dipole).
+    // A semi-infinite slab always has just the one dipole.
+    Multipole(const Slab& slab, int pairs_per_side);
+
+    // The pairs needed so that one more pair on each side changes the totals
+    // R and T and the profiles at r = 0 by less than `tolerance` relative to
+    // their values; grows n until then (or until `max_pairs_per_side`).
+    static Multipole converged(const Slab& slab, double tolerance, int max_pairs_per_side = 1 << 20);
+
+    double reflectance(double r) const;    // R(r), Eq. 12, per mm^2
+    double transmittance(double r) const;  // T(r), Eq. 13, per mm^2
+    double total_reflectance() const;      // integral of R over the plane, closed form
+    double total_transmittance() const;    // integral of T over the plane, closed form
+
+    int dipoles() const { return int(sources_.size()); }  // 2n + 1
+    int pairs_per_side() const { return (dipoles() - 1) / 2; }
+    const std::vector<SourcePair>& sources() const { return sources_; }
+
+private:
+    Slab slab_;
+    double alpha_ = 0, sigma_tr_ = 0;
+    std::vector<SourcePair> sources_;
+};
+
+}  // namespace st::optics
