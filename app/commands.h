@@ -27,11 +27,14 @@ int cmd_sweep(const std::string& technique, const std::string& out_dir, const Co
 
 // Single-layer optics options of `slab` and `profile` (see docs/optics.md).
 struct SlabOptions {
-    std::string model = "multipole";  // multipole | dipole
+    std::string model = "multipole";  // multipole | dipole | mc
     double sigma_a = -1, sigma_s = -1, g = 0, eta = 1.0, eta_below = -1;
     std::string thickness;  // mm or "inf"
     int pairs = -1;         // -1: from the tolerance
     double tolerance = 1e-6;
+    long long photons = 1000000;  // mc
+    long long seed = 1;           // mc
+    int threads = 2;              // mc
     bool json = false;
 };
 int cmd_slab(const SlabOptions& options);

@@ -65,8 +65,8 @@ int main(int argc, char** argv) {
 
     st::SlabOptions slab_options;
     auto add_slab_options = [&slab_options](CLI::App* cmd) {
-        cmd->add_option("--model", slab_options.model, "multipole or dipole")
-            ->check(CLI::IsMember({"multipole", "dipole"}));
+        cmd->add_option("--model", slab_options.model, "multipole, dipole or mc")
+            ->check(CLI::IsMember({"multipole", "dipole", "mc"}));
         cmd->add_option("--sigma-a", slab_options.sigma_a, "absorption coefficient, 1/mm")->required();
         cmd->add_option("--sigma-s", slab_options.sigma_s, "scattering coefficient, 1/mm")->required();
         cmd->add_option("--g", slab_options.g, "Henyey-Greenstein mean cosine");
@@ -76,8 +76,11 @@ int main(int argc, char** argv) {
         auto* pairs = cmd->add_option("--pairs", slab_options.pairs, "dipole pairs per side (multipole)");
         cmd->add_option("--tolerance", slab_options.tolerance, "relative tolerance that sets the pairs")->excludes(pairs);
     };
-    auto* slab = app.add_subcommand("slab", "total diffuse R and T of a slab (dipole or multipole)");
+    auto* slab = app.add_subcommand("slab", "total diffuse R and T of a slab (dipole, multipole or Monte Carlo)");
     add_slab_options(slab);
+    slab->add_option("--photons", slab_options.photons, "Monte Carlo photons");
+    slab->add_option("--seed", slab_options.seed, "Monte Carlo seed");
+    slab->add_option("--threads", slab_options.threads, "Monte Carlo threads")->check(CLI::Range(1, 256));
     slab->add_flag("--json", slab_options.json, "one JSON object");
     std::string profile_out;
     double r_max = 10.0;

@@ -140,6 +140,14 @@ case "$case_name" in
     expect_slab_error "eta 0" --sigma-a 1 --sigma-s 1 --thickness 1 --eta 0
     expect_slab_error "g = 1" --sigma-a 1 --sigma-s 1 --thickness 1 --g 1
     expect_slab_error "empty medium" --sigma-a 0 --sigma-s 0 --thickness 1
+    mc=$("$bin" slab --model mc --sigma-a 1 --sigma-s 9 --g 0.75 --thickness 0.2 --photons 100000 --json)
+    echo "$mc"
+    for key in R T T_direct R_stderr T_stderr; do echo "$mc" | grep -q "\"$key\"" || fail "slab mc: no $key"; done
+    [ "$("$bin" slab --model mc --sigma-a 1 --sigma-s 9 --thickness 0.2 --photons 20000 --threads 1 --json)" = \
+      "$("$bin" slab --model mc --sigma-a 1 --sigma-s 9 --thickness 0.2 --photons 20000 --threads 2 --json)" ] ||
+      fail "slab mc: depends on --threads"
+    expect_slab_error "zero photons" --model mc --sigma-a 1 --sigma-s 1 --thickness 1 --photons 0
+    expect_slab_error "absurd photons" --model mc --sigma-a 1 --sigma-s 1 --thickness 1 --photons 100000000000
     expect_slab_error "pairs and tolerance" --sigma-a 1 --sigma-s 1 --thickness 1 --pairs 3 --tolerance 1e-3
     # profile writes whole files only
     "$bin" profile --sigma-a 0.01 --sigma-s 1 --thickness 2 --out "$work/p.csv" 2>/dev/null

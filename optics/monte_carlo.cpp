@@ -1,0 +1,257 @@
+// monte_carlo.cpp: see monte_carlo.h. Follows MCML's steps (Wang et al.
+// 1995, the MCML manual ch. 3-4): all-or-none Fresnel at interfaces, the
+// unfinished step length carried across an interface, roulette below weight
+// 1e-4 with survival chance 0.1.
+#include "optics/monte_carlo.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <thread>
+
+#include "optics/photon_rng.h"
+
+namespace st::optics {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kCosZero = 1.0 - 1e-12;
+constexpr double kCos90 = 1e-6;
+constexpr double kRouletteWeight = 1e-4;
+constexpr double kRouletteChance = 0.1;
+
+struct Tally {
+    double R = 0, T = 0, T_direct = 0, absorbed = 0;
+    std::vector<double> R_bins, T_bins;
+};
+
+// Unpolarised Fresnel reflectance from medium n1 into n2 at incidence cosine
+// ca1 (> 0); ca2 receives the cosine of the transmitted direction.
+double fresnel(double n1, double n2, double ca1, double& ca2) {
+    if (n1 == n2) {
+        ca2 = ca1;
+        return 0.0;
+    }
+    if (ca1 > kCosZero) {
+        ca2 = ca1;
+        const double r = (n2 - n1) / (n2 + n1);
+        return r * r;
+    }
+    if (ca1 < kCos90) {
+        ca2 = 0.0;
+        return 1.0;
+    }
+    const double sa1 = std::sqrt(1.0 - ca1 * ca1);
+    const double sa2 = n1 * sa1 / n2;
+    if (sa2 >= 1.0) {  // total internal reflection
+        ca2 = 0.0;
+        return 1.0;
+    }
+    ca2 = std::sqrt(1.0 - sa2 * sa2);
+    const double cap = ca1 * ca2 - sa1 * sa2, cam = ca1 * ca2 + sa1 * sa2;
+    const double sap = sa1 * ca2 + ca1 * sa2, sam = sa1 * ca2 - ca1 * sa2;
+    return 0.5 * sam * sam * (cam * cam + cap * cap) / (sap * sap * cam * cam);
+}
+
+double henyey_greenstein_cosine(double g, PhotonRng& rng) {
+    const double xi = rng.uniform();
+    if (g == 0.0) return 2.0 * xi - 1.0;
+    const double t = (1.0 - g * g) / (1.0 - g + 2.0 * g * xi);
+    return std::clamp((1.0 + g * g - t * t) / (2.0 * g), -1.0, 1.0);
+}
+
+class Tracer {
+public:
+    Tracer(const McSetup& s) : s_(s) {
+        z_top_.push_back(0.0);
+        for (const McLayer& l : s.layers) z_top_.push_back(z_top_.back() + l.thickness);
+    }
+
+    void trace_one(PhotonRng& rng, Tally& t) const {
+        double x = 0, y = 0, z = 0, ux = 0, uy = 0, uz = 1;
+        double w = 1.0 - specular();
+        size_t layer = 0;
+        bool scattered = false, alive = true;
+        double step_left = 0.0;  // dimensionless (optical) step still to go
+        while (alive) {
+            const McLayer& L = s_.layers[layer];
+            const double mut = L.sigma_a + L.sigma_s;
+            if (step_left == 0.0) step_left = -std::log(rng.uniform());
+            const double step = mut > 0.0 ? step_left / mut : std::numeric_limits<double>::infinity();
+            double to_boundary = std::numeric_limits<double>::infinity();
+            if (uz > 0.0) to_boundary = (z_top_[layer + 1] - z) / uz;
+            else if (uz < 0.0) to_boundary = (z_top_[layer] - z) / uz;
+
+            if (step > to_boundary) {
+                x += to_boundary * ux;
+                y += to_boundary * uy;
+                z = uz > 0.0 ? z_top_[layer + 1] : z_top_[layer];
+                if (mut > 0.0) step_left -= to_boundary * mut;
+                cross(rng, t, x, y, ux, uy, uz, w, layer, scattered, alive);
+            } else {
+                x += step * ux;
+                y += step * uy;
+                z += step * uz;
+                step_left = 0.0;
+                const double dw = w * L.sigma_a / mut;
+                w -= dw;
+                t.absorbed += dw;
+                scatter(L.g, rng, ux, uy, uz);
+                scattered = true;
+            }
+            if (alive && w < kRouletteWeight) {
+                if (rng.uniform() <= kRouletteChance) w /= kRouletteChance;
+                else alive = false;
+            }
+        }
+    }
+
+    double specular() const {
+        const double r = (s_.n_above - s_.layers[0].n) / (s_.n_above + s_.layers[0].n);
+        return r * r;
+    }
+
+private:
+    void cross(PhotonRng& rng, Tally& t, double x, double y, double& ux, double& uy, double& uz, double w,
+               size_t& layer, bool scattered, bool& alive) const {
+        const bool up = uz < 0.0;
+        const double n1 = s_.layers[layer].n;
+        const bool leaves = up ? layer == 0 : layer + 1 == s_.layers.size();
+        const double n2 = leaves ? (up ? s_.n_above : s_.n_below) : s_.layers[up ? layer - 1 : layer + 1].n;
+        double ca2 = 0.0;
+        const double r = fresnel(n1, n2, std::abs(uz), ca2);
+        if (rng.uniform() <= r) {  // reflected
+            uz = -uz;
+            return;
+        }
+        if (leaves) {
+            const double radius = std::sqrt(x * x + y * y);
+            const int bin = int(radius / s_.bin_width);
+            if (up) {
+                t.R += w;
+                if (bin < s_.bins) t.R_bins[size_t(bin)] += w;
+            } else if (!scattered) {
+                t.T_direct += w;
+            } else {
+                t.T += w;
+                if (bin < s_.bins) t.T_bins[size_t(bin)] += w;
+            }
+            alive = false;
+            return;
+        }
+        ux *= n1 / n2;
+        uy *= n1 / n2;
+        uz = up ? -ca2 : ca2;
+        layer = up ? layer - 1 : layer + 1;
+    }
+
+    static void scatter(double g, PhotonRng& rng, double& ux, double& uy, double& uz) {
+        const double cost = henyey_greenstein_cosine(g, rng);
+        const double sint = std::sqrt(1.0 - cost * cost);
+        const double psi = 2.0 * kPi * rng.uniform();
+        const double cosp = std::cos(psi), sinp = std::sin(psi);
+        if (std::abs(uz) > kCosZero) {
+            ux = sint * cosp;
+            uy = sint * sinp;
+            uz = uz >= 0.0 ? cost : -cost;
+        } else {
+            const double temp = std::sqrt(1.0 - uz * uz);
+            const double nx = sint * (ux * uz * cosp - uy * sinp) / temp + ux * cost;
+            const double ny = sint * (uy * uz * cosp + ux * sinp) / temp + uy * cost;
+            const double nz = -sint * cosp * temp + uz * cost;
+            ux = nx;
+            uy = ny;
+            uz = nz;
+        }
+    }
+
+    const McSetup& s_;
+    std::vector<double> z_top_;  // depth of each layer's top, then the bottom of the last
+};
+
+}  // namespace
+
+McResult trace_photons(const McSetup& setup) {
+    const Tracer tracer(setup);
+    // Chunks depend on the photon count only: at least 4096 photons, at
+    // most 1024 chunks plus one.
+    const uint64_t chunk = std::max<uint64_t>(4096, setup.photons / 1024);
+    const uint64_t chunks = (setup.photons + chunk - 1) / chunk;
+    std::vector<Tally> tallies(static_cast<size_t>(chunks));
+    std::atomic<uint64_t> next{0}, done{0};
+    auto run_chunk = [&](uint64_t c) {
+        Tally& t = tallies[size_t(c)];
+        t.R_bins.assign(size_t(setup.bins), 0.0);
+        t.T_bins.assign(size_t(setup.bins), 0.0);
+        PhotonRng rng(setup.seed, c);
+        const uint64_t n = std::min(chunk, setup.photons - c * chunk);
+        for (uint64_t p = 0; p < n; ++p) tracer.trace_one(rng, t);
+        done.fetch_add(1);
+    };
+    auto work = [&] {
+        for (uint64_t c; (c = next.fetch_add(1)) < chunks;) run_chunk(c);
+    };
+    std::vector<std::thread> threads;
+    for (int i = 1; i < std::max(1, setup.threads); ++i) threads.emplace_back(work);
+    // The calling thread works too, and reports progress between its chunks.
+    auto last = std::chrono::steady_clock::now();
+    for (uint64_t c; (c = next.fetch_add(1)) < chunks;) {
+        run_chunk(c);
+        const auto now = std::chrono::steady_clock::now();
+        if (setup.progress && now - last > std::chrono::seconds(1)) {
+            setup.progress(double(done.load()) / double(chunks));
+            last = now;
+        }
+    }
+    for (auto& t : threads) t.join();
+
+    McResult r;
+    r.specular = tracer.specular();
+    r.R_profile.assign(size_t(setup.bins), 0.0);
+    r.T_profile.assign(size_t(setup.bins), 0.0);
+    const double total = double(setup.photons);
+    std::vector<double> chunk_r, chunk_t;
+    for (uint64_t c = 0; c < chunks; ++c) {
+        const Tally& t = tallies[size_t(c)];
+        const double n = double(std::min(chunk, setup.photons - c * chunk));
+        r.R += t.R;
+        r.T += t.T;
+        r.T_direct += t.T_direct;
+        r.absorbed += t.absorbed;
+        chunk_r.push_back(t.R / n);
+        chunk_t.push_back(t.T / n);
+        for (int b = 0; b < setup.bins; ++b) {
+            r.R_profile[size_t(b)] += t.R_bins[size_t(b)];
+            r.T_profile[size_t(b)] += t.T_bins[size_t(b)];
+        }
+    }
+    r.R /= total;
+    r.T /= total;
+    r.T_direct /= total;
+    r.absorbed /= total;
+    auto stderr_of = [](const std::vector<double>& v) {
+        if (v.size() < 2) return 0.0;
+        double mean = 0.0;
+        for (double x : v) mean += x;
+        mean /= double(v.size());
+        double ss = 0.0;
+        for (double x : v) ss += (x - mean) * (x - mean);
+        return std::sqrt(ss / (double(v.size()) * double(v.size() - 1)));
+    };
+    r.R_stderr = stderr_of(chunk_r);
+    r.T_stderr = stderr_of(chunk_t);
+    const double dr = setup.bin_width;
+    for (int b = 0; b < setup.bins; ++b) {
+        const double i = b + 0.5;
+        r.bin_centres.push_back((i + 1.0 / (12.0 * i)) * dr);
+        const double area = 2.0 * kPi * i * dr * dr;  // annulus b
+        r.R_profile[size_t(b)] /= total * area;
+        r.T_profile[size_t(b)] /= total * area;
+    }
+    return r;
+}
+
+}  // namespace st::optics
