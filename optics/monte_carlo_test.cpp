@@ -38,6 +38,16 @@ TEST(MonteCarlo, McmlIndexMatchedSlab) {
     EXPECT_LT(r.R_stderr, 5e-4);
 }
 
+// Semi-infinite, n = 1.5, mu_a = 10/cm, mu_s = 90/cm, g = 0: Giovanelli 0.2600,
+// MCML 0.25907 +- 0.00170 (notes). Those are total reflectances: our diffuse
+// R is 0.220 and the specular reflection at entry adds ((1.5-1)/(1.5+1))^2 = 0.04.
+TEST(MonteCarlo, GiovanelliSemiInfiniteMismatched) {
+    const McResult r = trace_photons(slab(1.0, 9.0, 0.0, 1.5, INFINITY, 400000));
+    EXPECT_DOUBLE_EQ(r.specular, 0.04);
+    EXPECT_NEAR(r.R + r.specular, 0.2600, 4.0 * r.R_stderr + 2e-4) << r.R_stderr;
+    EXPECT_EQ(r.T + r.T_direct, 0.0);
+}
+
 // Isotropic scattering, index-matched: the exact slab solution.
 TEST(MonteCarlo, MatchesExactIsotropicSlab) {
     const McResult r = trace_photons(slab(1.0, 9.0, 0.0, 1.0, 0.2, 400000));
