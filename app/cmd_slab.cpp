@@ -61,9 +61,10 @@ optics::Slab validated(const SlabOptions& o) {
 }
 
 optics::Multipole build(const optics::Slab& s, const SlabOptions& o) {
-    if (o.model == "dipole") return optics::Multipole(s, 0);
-    if (o.pairs >= 0) return optics::Multipole(s, o.pairs);
-    return optics::Multipole::converged(s, o.tolerance);
+    const auto source = o.source == "paper" ? optics::SourceDepth::MeanFreePath : optics::SourceDepth::FirstScatter;
+    if (o.model == "dipole") return optics::Multipole(s, 0, source);
+    if (o.pairs >= 0) return optics::Multipole(s, o.pairs, source);
+    return optics::Multipole::converged(s, o.tolerance, source);
 }
 
 }  // namespace
@@ -117,6 +118,7 @@ int cmd_slab(const SlabOptions& o) {
                         {"T", m.total_transmittance()},
                         {"T_direct", t_direct},
                         {"dipole_pairs", m.dipoles()},
+                        {"source", o.source},
                         {"sigma_tr", s.sigma_tr()},
                         {"albedo_reduced", s.albedo_reduced()}};
     if (o.model == "multipole" && o.pairs < 0) j["tolerance"] = o.tolerance;

@@ -32,6 +32,7 @@ struct SlabOptions {
     std::string thickness;  // mm or "inf"
     int pairs = -1;         // -1: from the tolerance
     double tolerance = 1e-6;
+    std::string source = "first-scatter";  // first-scatter | paper (diffusion source depth)
     long long photons = 1000000;  // mc
     long long seed = 1;           // mc
     int threads = 2;              // mc

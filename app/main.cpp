@@ -73,6 +73,9 @@ int main(int argc, char** argv) {
         cmd->add_option("--eta", slab_options.eta, "index of the slab relative to the medium above");
         cmd->add_option("--eta-below", slab_options.eta_below, "relative to the medium below (default: --eta)");
         cmd->add_option("--thickness", slab_options.thickness, "mm, or inf")->required();
+        cmd->add_option("--source", slab_options.source,
+                        "diffusion source depth: first-scatter (defined for any thickness) or paper (1/sigma_t')")
+            ->check(CLI::IsMember({"first-scatter", "paper"}));
         auto* pairs = cmd->add_option("--pairs", slab_options.pairs, "dipole pairs per side (multipole)");
         cmd->add_option("--tolerance", slab_options.tolerance, "relative tolerance that sets the pairs")->excludes(pairs);
     };

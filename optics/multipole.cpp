@@ -29,10 +29,18 @@ double point_total(double z, double sigma_tr) {
 
 }  // namespace
 
-Multipole::Multipole(const Slab& slab, int n) : slab_(slab) {
+Multipole::Multipole(const Slab& slab, int n, SourceDepth source) : slab_(slab), source_(source) {
     alpha_ = slab.albedo_reduced();
     sigma_tr_ = slab.sigma_tr();
-    const double D = slab.diffusion_constant(), l = slab.mean_free_path();
+    const double D = slab.diffusion_constant();
+    double l = slab.mean_free_path();
+    if (source == SourceDepth::FirstScatter && !slab.semi_infinite()) {
+        const double x = slab.thickness / l;
+        const double scatters = -std::expm1(-x);  // 1 - e^(-d/l)
+        // l - d e^(-x) / (1 - e^(-x)), written to stay accurate for small x.
+        l = l * (1.0 - x / std::expm1(x));
+        alpha_ *= scatters;
+    }
     const double zb_top = 2.0 * boundary_factor(slab.eta) * D;
     if (slab.semi_infinite()) {
         sources_.push_back({l, -l - 2.0 * zb_top});  // Eq. 3's dipole
@@ -44,11 +52,14 @@ Multipole::Multipole(const Slab& slab, int n) : slab_(slab) {
         sources_.push_back({i * period + l, i * period - l - 2.0 * zb_top});
 }
 
+// A truncated image series, or the cancellation of nearly equal terms far
+// from the source, can leave a profile slightly below zero; a radiant
+// exitance cannot be, so profiles are clamped at 0 (the totals are not).
 double Multipole::reflectance(double r) const {
     double sum = 0.0;
     for (const SourcePair& s : sources_)
         sum += point_profile(s.z_real, r, sigma_tr_) - point_profile(s.z_virtual, r, sigma_tr_);
-    return alpha_ * sum;
+    return std::max(0.0, alpha_ * sum);
 }
 
 double Multipole::transmittance(double r) const {
@@ -57,10 +68,27 @@ double Multipole::transmittance(double r) const {
     double sum = 0.0;
     for (const SourcePair& s : sources_)
         sum += point_profile(d - s.z_real, r, sigma_tr_) - point_profile(d - s.z_virtual, r, sigma_tr_);
-    return alpha_ * sum;
+    return std::max(0.0, alpha_ * sum);
 }
 
+// Without absorption sigma_tr = 0 and every pair's total cancels but the
+// first, while the series' sum does not (it converges only for sigma_tr > 0).
+// Its limit is the diffusion solution of a non-absorbing slab: a fluence
+// linear between the extrapolated boundaries, split at the source depth.
+namespace {
+double non_absorbing_share(double z_source, double zb_top, double zb_bottom, double d, bool reflected) {
+    const double span = d + zb_top + zb_bottom;
+    return reflected ? (d + zb_bottom - z_source) / span : (z_source + zb_top) / span;
+}
+}  // namespace
+
 double Multipole::total_reflectance() const {
+    if (sigma_tr_ == 0.0 && !slab_.semi_infinite()) {
+        const SourcePair& c = sources_[sources_.size() / 2];  // the central pair
+        const double zb_top = -(c.z_virtual + c.z_real) / 2.0;
+        const double zb_bottom = 2.0 * boundary_factor(slab_.eta_below) * slab_.diffusion_constant();
+        return alpha_ * non_absorbing_share(c.z_real, zb_top, zb_bottom, slab_.thickness, true);
+    }
     double sum = 0.0;
     for (const SourcePair& s : sources_) sum += point_total(s.z_real, sigma_tr_) - point_total(s.z_virtual, sigma_tr_);
     return alpha_ * sum;
@@ -68,6 +96,12 @@ double Multipole::total_reflectance() const {
 
 double Multipole::total_transmittance() const {
     if (slab_.semi_infinite()) return 0.0;
+    if (sigma_tr_ == 0.0) {
+        const SourcePair& c = sources_[sources_.size() / 2];
+        const double zb_top = -(c.z_virtual + c.z_real) / 2.0;
+        const double zb_bottom = 2.0 * boundary_factor(slab_.eta_below) * slab_.diffusion_constant();
+        return alpha_ * non_absorbing_share(c.z_real, zb_top, zb_bottom, slab_.thickness, false);
+    }
     const double d = slab_.thickness;
     double sum = 0.0;
     for (const SourcePair& s : sources_)
@@ -75,8 +109,8 @@ double Multipole::total_transmittance() const {
     return alpha_ * sum;
 }
 
-Multipole Multipole::converged(const Slab& slab, double tolerance, int max_pairs_per_side) {
-    if (slab.semi_infinite()) return Multipole(slab, 0);
+Multipole Multipole::converged(const Slab& slab, double tolerance, SourceDepth source, int max_pairs_per_side) {
+    if (slab.semi_infinite()) return Multipole(slab, 0, source);
     auto measures = [](const Multipole& mp) {
         return std::array<double, 4>{mp.total_reflectance(), mp.total_transmittance(), mp.reflectance(0.0),
                                      mp.transmittance(0.0)};
@@ -86,11 +120,11 @@ Multipole Multipole::converged(const Slab& slab, double tolerance, int max_pairs
     // factor): the series is geometric. Stop when the last pair's change plus
     // the geometric tail it implies, delta q / (1 - q), is within tolerance of
     // every measure; q is estimated from two successive changes.
-    std::array<double, 4> prev = measures(Multipole(slab, 0)), cur = measures(Multipole(slab, 1));
+    std::array<double, 4> prev = measures(Multipole(slab, 0, source)), cur = measures(Multipole(slab, 1, source));
     std::array<double, 4> prev_delta{};
     for (size_t k = 0; k < 4; ++k) prev_delta[k] = std::abs(cur[k] - prev[k]);
     for (int n = 1; n < max_pairs_per_side; ++n) {
-        const std::array<double, 4> next = measures(Multipole(slab, n + 1));
+        const std::array<double, 4> next = measures(Multipole(slab, n + 1, source));
         bool done = true;
         for (size_t k = 0; k < 4; ++k) {
             const double delta = std::abs(next[k] - cur[k]);
@@ -100,9 +134,9 @@ Multipole Multipole::converged(const Slab& slab, double tolerance, int max_pairs
             prev_delta[k] = delta;
         }
         cur = next;
-        if (done) return Multipole(slab, n);
+        if (done) return Multipole(slab, n, source);
     }
-    return Multipole(slab, max_pairs_per_side);
+    return Multipole(slab, max_pairs_per_side, source);
 }
 
 }  // namespace st::optics

@@ -16,6 +16,19 @@
 
 namespace st::optics {
 
+// Where the diffusion source of the incident beam sits.
+enum class SourceDepth {
+    // The paper: one mean free path l = 1/sigma_t' deep, weight 1. Breaks
+    // when l exceeds the thickness (the source lies below the slab; R or T
+    // go negative) and counts the unscattered beam into T.
+    MeanFreePath,
+    // The mean depth of first (reduced) scattering inside the slab,
+    // l - d e^(-d/l) / (1 - e^(-d/l)), weighted by the chance of scattering
+    // there at all, 1 - e^(-d/l): the same as MeanFreePath for thick slabs,
+    // defined for any thickness, and T excludes the unscattered beam.
+    FirstScatter,
+};
+
 struct SourcePair {
     double z_real, z_virtual;  // signed depths, mm
 };
@@ -24,12 +37,13 @@ class Multipole {
 public:
     // `pairs_per_side` = n of Eq. 11/16: 2n + 1 dipoles (n = 0: the dipole).
     // A semi-infinite slab always has just the one dipole.
-    Multipole(const Slab& slab, int pairs_per_side);
+    Multipole(const Slab& slab, int pairs_per_side, SourceDepth source = SourceDepth::FirstScatter);
 
     // The pairs needed so that one more pair on each side changes the totals
     // R and T and the profiles at r = 0 by less than `tolerance` relative to
     // their values; grows n until then (or until `max_pairs_per_side`).
-    static Multipole converged(const Slab& slab, double tolerance, int max_pairs_per_side = 1 << 20);
+    static Multipole converged(const Slab& slab, double tolerance, SourceDepth source = SourceDepth::FirstScatter,
+                               int max_pairs_per_side = 1 << 20);
 
     double reflectance(double r) const;    // R(r), Eq. 12, per mm^2
     double transmittance(double r) const;  // T(r), Eq. 13, per mm^2
@@ -42,7 +56,8 @@ public:
 
 private:
     Slab slab_;
-    double alpha_ = 0, sigma_tr_ = 0;
+    SourceDepth source_;
+    double alpha_ = 0, sigma_tr_ = 0;  // alpha_ includes the source's weight
     std::vector<SourcePair> sources_;
 };
 

@@ -122,11 +122,12 @@ case "$case_name" in
 
   slab)
     # Output shape and the notes' multipole example (R settles at 49.7 %).
-    line=$("$bin" slab --sigma-a 0.00127 --sigma-s 0.99873 --thickness 2 --json)
+    line=$("$bin" slab --sigma-a 0.00127 --sigma-s 0.99873 --thickness 2 --source paper --json)
     echo "$line"
     for key in R T T_direct dipole_pairs; do echo "$line" | grep -q "\"$key\"" || fail "slab: no $key"; done
     echo "$line" | grep -q '"R":0.497' || fail "slab: R is not 0.497"
     "$bin" slab --model dipole --sigma-a 0.00127 --sigma-s 0.99873 --thickness inf | grep -q "^R 0.9017" || fail "dipole R"
+    "$bin" slab --sigma-a 0.01 --sigma-s 1 --thickness 0.5 --json | grep -q '"T":-' && fail "thin slab: negative T"
     expect_slab_error() {
       local what="$1"; shift
       set +e; "$bin" slab "$@" >"$work/stdout" 2>"$work/stderr"; local rc=$?; set -e
