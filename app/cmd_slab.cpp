@@ -10,10 +10,14 @@
 
 #include "app/commands.h"
 #include "image/image_io.h"
+#include "optics/layered.h"
 #include "optics/monte_carlo.h"
 #include "optics/multipole.h"
 #include "raster/stage_times.h"
 #include "scene/input_error.h"
+#include "scene/json_reader.h"
+
+#include <fstream>
 
 namespace st {
 
@@ -25,7 +29,62 @@ double fresnel_normal(double eta) {
     return r * r;
 }
 
+// Reads and checks a layers file: a JSON list, top layer first.
+std::vector<optics::LayerSpec> read_layers(const SlabOptions& o) {
+    std::ifstream in(o.layers_file);
+    if (!in) throw InputError("cannot read layers file " + o.layers_file);
+    const nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
+    if (doc.is_discarded()) throw InputError(o.layers_file + ": malformed JSON");
+    if (!doc.is_array() || doc.empty()) throw InputError(o.layers_file + ": expected a non-empty JSON list of layers");
+    if (doc.size() > 64) throw InputError(o.layers_file + ": at most 64 layers");
+    std::vector<optics::LayerSpec> layers;
+    try {
+        for (size_t i = 0; i < doc.size(); ++i) {
+            JsonReader r(doc[i], std::to_string(i));
+            optics::LayerSpec l;
+            const auto a = r.numbers("sigma_a", 3, 3, 0.0, 1e9), s = r.numbers("sigma_s", 3, 3, 0.0, 1e9);
+            for (int c = 0; c < 3; ++c) {
+                l.sigma_a[size_t(c)] = a[size_t(c)];
+                l.sigma_s[size_t(c)] = s[size_t(c)];
+                if (!(a[size_t(c)] + s[size_t(c)] > 0.0))
+                    throw InputError("layer " + std::to_string(i) + " neither scatters nor absorbs in channel " +
+                                     std::to_string(c));
+            }
+            l.g = r.number("g", -0.999999, 0.999999);
+            l.eta = r.number("eta", 1e-6, 1e6);
+            const bool last = i + 1 == doc.size();
+            if (doc[i].contains("thickness") && doc[i]["thickness"] == "inf") {
+                if (!last) throw InputError("layer " + std::to_string(i) + ": only the last layer may be infinite");
+                r.string("thickness");
+                l.thickness = INFINITY;
+            } else {
+                l.thickness = r.number("thickness", 1e-12, 1e9);
+            }
+            if (r.has("roughness"))
+                throw InputError("layer " + std::to_string(i) + ": rough surfaces (Eq. 23-26) are not implemented yet");
+            r.finish();
+            layers.push_back(l);
+        }
+    } catch (const InputError& e) {
+        throw InputError(o.layers_file + ": " + e.what());
+    }
+    if (o.grid < 8 || o.grid > 4096 || (o.grid & (o.grid - 1))) throw InputError("--grid must be a power of two in [8, 4096]");
+    if (!(o.extent >= 0.0) || !std::isfinite(o.extent)) throw InputError("--extent must be a number >= 0 (mm)");
+    return layers;
+}
+
+optics::LayeredOptions layered_options(const SlabOptions& o) {
+    optics::LayeredOptions lo;
+    lo.grid = o.grid;
+    lo.extent = o.extent;
+    lo.kubelka_munk = !o.no_km;
+    lo.tolerance = o.tolerance;
+    return lo;
+}
+
 optics::Slab validated(const SlabOptions& o) {
+    if (o.sigma_a == -1 && o.sigma_s == -1 && o.thickness.empty())
+        throw InputError("give --sigma-a, --sigma-s and --thickness, or --layers FILE");
     auto finite_nonneg = [](double v, const char* name) {
         if (!std::isfinite(v) || v < 0.0) throw InputError(std::string(name) + " must be a finite number >= 0");
     };
@@ -105,6 +164,29 @@ int slab_monte_carlo(const optics::Slab& s, const SlabOptions& o) {
 }  // namespace
 
 int cmd_slab(const SlabOptions& o) {
+    if (!o.layers_file.empty()) {
+        if (o.model != "multipole") throw InputError("--layers works with --model multipole only, so far");
+        const auto layers = read_layers(o);
+        const optics::LayeredResult r = optics::combine_layers(layers, layered_options(o));
+        nlohmann::json j = {{"model", "multipole"}, {"layers", layers.size()}, {"km", !o.no_km},
+                            {"grid", o.grid}, {"cell_mm", r.cell}, {"dipole_pairs", r.dipoles}};
+        for (const char* key : {"R", "T", "T_direct"}) {
+            nlohmann::json list = nlohmann::json::array();
+            for (const auto& c : r.channel)
+                list.push_back(std::string(key) == "R" ? c.R : std::string(key) == "T" ? c.T : c.T_direct);
+            j[key] = list;
+        }
+        if (o.json) {
+            std::cout << j.dump() << std::endl;
+        } else {
+            std::cout << std::setprecision(6);
+            for (const char* key : {"R", "T", "T_direct"}) std::cout << key << " " << j[key][0] << " " << j[key][1] << " " << j[key][2] << "\n";
+            std::cout << "dipole_pairs";
+            for (int d : r.dipoles) std::cout << " " << d;
+            std::cout << "\n";
+        }
+        return 0;
+    }
     const optics::Slab s = validated(o);
     if (o.model == "mc") return slab_monte_carlo(s, o);
     const optics::Multipole m = build(s, o);
@@ -132,6 +214,32 @@ int cmd_slab(const SlabOptions& o) {
 }
 
 int cmd_profile(const SlabOptions& o, const std::string& out, double r_max, int samples) {
+    if (!o.layers_file.empty()) {
+        if (out.empty()) throw InputError("profile needs --out FILE (.csv or .exr)");
+        const auto layers = read_layers(o);
+        const optics::LayeredResult r = optics::combine_layers(layers, layered_options(o));
+        std::ostringstream csv;
+        csv << std::setprecision(9) << "r_mm,R_r,R_g,R_b,T_r,T_g,T_b\n";
+        const bool exr = out.size() > 4 && out.compare(out.size() - 4, 4, ".exr") == 0;
+        Image rows(int(r.radii.size()), 2);  // row 0: R(r) rgb, row 1: T(r) rgb; alpha = r
+        for (size_t i = 0; i < r.radii.size(); ++i) {
+            csv << r.radii[i];
+            for (const auto& c : r.channel) csv << ',' << c.R_profile[i];
+            for (const auto& c : r.channel) csv << ',' << c.T_profile[i];
+            csv << '\n';
+            for (int c = 0; c < 3; ++c) {
+                rows.pixel(int(i), 0)[c] = float(r.channel[size_t(c)].R_profile[i]);
+                rows.pixel(int(i), 1)[c] = float(r.channel[size_t(c)].T_profile[i]);
+            }
+            rows.pixel(int(i), 0)[3] = rows.pixel(int(i), 1)[3] = float(r.radii[i]);
+        }
+        if (exr)
+            write_exr(out, rows, {{"model", "multipole, layered"}, {"rows", "0: R(r) rgb, 1: T(r) rgb; alpha = r in mm"}});
+        else
+            write_text_file(out, csv.str());
+        std::cerr << "profile: " << r.radii.size() << " radii, cell " << r.cell << " mm\n";
+        return 0;
+    }
     const optics::Slab s = validated(o);
     if (o.model == "mc") throw InputError("profile does not take --model mc yet");
     if (out.empty()) throw InputError("profile needs --out FILE (.csv or .exr)");

@@ -33,6 +33,10 @@ struct SlabOptions {
     int pairs = -1;         // -1: from the tolerance
     double tolerance = 1e-6;
     std::string source = "first-scatter";  // first-scatter | paper (diffusion source depth)
+    std::string layers_file;  // --layers: replaces the single-layer options
+    bool no_km = false;
+    int grid = 256;
+    double extent = 0.0;
     long long photons = 1000000;  // mc
     long long seed = 1;           // mc
     int threads = 2;              // mc

@@ -67,12 +67,16 @@ int main(int argc, char** argv) {
     auto add_slab_options = [&slab_options](CLI::App* cmd) {
         cmd->add_option("--model", slab_options.model, "multipole, dipole or mc")
             ->check(CLI::IsMember({"multipole", "dipole", "mc"}));
-        cmd->add_option("--sigma-a", slab_options.sigma_a, "absorption coefficient, 1/mm")->required();
-        cmd->add_option("--sigma-s", slab_options.sigma_s, "scattering coefficient, 1/mm")->required();
+        cmd->add_option("--sigma-a", slab_options.sigma_a, "absorption coefficient, 1/mm");
+        cmd->add_option("--sigma-s", slab_options.sigma_s, "scattering coefficient, 1/mm");
         cmd->add_option("--g", slab_options.g, "Henyey-Greenstein mean cosine");
         cmd->add_option("--eta", slab_options.eta, "index of the slab relative to the medium above");
         cmd->add_option("--eta-below", slab_options.eta_below, "relative to the medium below (default: --eta)");
-        cmd->add_option("--thickness", slab_options.thickness, "mm, or inf")->required();
+        cmd->add_option("--thickness", slab_options.thickness, "mm, or inf");
+        cmd->add_option("--layers", slab_options.layers_file, "a JSON list of layers, top first (replaces the above)");
+        cmd->add_flag("--no-km", slab_options.no_km, "layers: drop the frequency-space correction (first term only)");
+        cmd->add_option("--grid", slab_options.grid, "layers: FFT grid size (power of two)");
+        cmd->add_option("--extent", slab_options.extent, "layers: grid width in mm (default: 64 mean free paths)");
         cmd->add_option("--source", slab_options.source,
                         "diffusion source depth: first-scatter (defined for any thickness) or paper (1/sigma_t')")
             ->check(CLI::IsMember({"first-scatter", "paper"}));

@@ -6,7 +6,7 @@ packages=(
   build-essential cmake pkg-config
   libglm-dev libopenimageio-dev openimageio-tools libopenexr-dev
   libgtest-dev libbenchmark-dev libosmesa6-dev
-  nlohmann-json3-dev libcli11-dev
+  nlohmann-json3-dev libcli11-dev libkissfft-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -150,6 +150,21 @@ case "$case_name" in
     expect_slab_error "zero photons" --model mc --sigma-a 1 --sigma-s 1 --thickness 1 --photons 0
     expect_slab_error "absurd photons" --model mc --sigma-a 1 --sigma-s 1 --thickness 1 --photons 100000000000
     expect_slab_error "pairs and tolerance" --sigma-a 1 --sigma-s 1 --thickness 1 --pairs 3 --tolerance 1e-3
+    # Layers: per-channel lists, and bad layer files.
+    printf '[{"sigma_a":[0.05,0.1,0.2],"sigma_s":[1,1,1],"g":0,"eta":1.4,"thickness":0.5},{"sigma_a":[0.01,0.02,0.04],"sigma_s":[2,2,2],"g":0,"eta":1.0,"thickness":"inf"}]' >"$work/layers.json"
+    layered=$("$bin" slab --layers "$work/layers.json" --json)
+    echo "$layered"
+    echo "$layered" | grep -q '"R":\[[0-9.e-]*,[0-9.e-]*,[0-9.e-]*\]' || fail "layers: R is not a list of three"
+    printf '[]' >"$work/empty.json"
+    expect_slab_error "empty layer list" --layers "$work/empty.json"
+    printf '[{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":"inf"},{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":1}]' >"$work/inf.json"
+    expect_slab_error "infinite layer above another" --layers "$work/inf.json"
+    printf '[{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":1.5,"eta":1,"thickness":1}]' >"$work/g.json"
+    expect_slab_error "g out of range in a layer" --layers "$work/g.json"
+    printf '[{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":1' >"$work/broken.json"
+    expect_slab_error "malformed layers file" --layers "$work/broken.json"
+    "$bin" profile --layers "$work/layers.json" --out "$work/layers.csv" 2>/dev/null
+    head -1 "$work/layers.csv" | grep -q "^r_mm,R_r,R_g,R_b,T_r,T_g,T_b$" || fail "layers profile header"
     # profile writes whole files only
     "$bin" profile --sigma-a 0.01 --sigma-s 1 --thickness 2 --out "$work/p.csv" 2>/dev/null
     head -1 "$work/p.csv" | grep -q "^r_mm,R,T$" || fail "profile: CSV header"

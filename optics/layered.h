@@ -1,0 +1,41 @@
+// layered.h: layers combined in frequency space (Donner and Jensen 2005,
+// Sec. 2.3, Eq. 17-22): each layer's multipole profiles R(r), T(r), seen
+// from above and from below, are laid on a zero-padded Cartesian grid,
+// Fourier transformed (KissFFT, 2D real), combined per frequency with
+// Kubelka-Munk's formulas, and transformed back to radial profiles.
+#pragma once
+
+#include <array>
+#include <vector>
+
+namespace st::optics {
+
+struct LayerSpec {
+    std::array<double, 3> sigma_a{}, sigma_s{};  // per mm, for R, G, B
+    double g = 0;
+    double eta = 1;  // index relative to the medium above (the layer above, or air)
+    double thickness = 1;  // mm, may be infinite for the last layer
+};
+
+struct LayeredOptions {
+    int grid = 256;          // N x N cells, a power of two
+    double extent = 0;       // mm across the grid; 0 = 16 mean free paths of the thickest-scattering layer
+    bool kubelka_munk = true;  // false: the first term of Eq. 20 only (Table 2's no-KM column)
+    double tolerance = 1e-6;   // for each layer's multipole
+};
+
+struct ChannelResult {
+    double R = 0, T = 0, T_direct = 0;
+    std::vector<double> R_profile, T_profile;  // per mm^2 at `radii`
+};
+
+struct LayeredResult {
+    std::array<ChannelResult, 3> channel;
+    std::vector<double> radii;  // mm, annulus centres
+    double cell = 0;            // mm
+    std::vector<int> dipoles;   // per layer, most over the channels
+};
+
+LayeredResult combine_layers(const std::vector<LayerSpec>& layers, const LayeredOptions& options);
+
+}  // namespace st::optics

@@ -1,0 +1,119 @@
+// layered_test.cpp: frequency-space layering (Eq. 21-22) against the
+// single-layer multipole and the Monte Carlo tracer, and its failure cases.
+#include "optics/layered.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "optics/monte_carlo.h"
+#include "optics/multipole.h"
+
+namespace st::optics {
+
+namespace {
+
+LayerSpec layer(double sigma_a, double sigma_s, double d, double eta = 1.0) {
+    LayerSpec l;
+    l.sigma_a = {sigma_a, sigma_a, sigma_a};
+    l.sigma_s = {sigma_s, sigma_s, sigma_s};
+    l.eta = eta;
+    l.thickness = d;
+    return l;
+}
+
+}  // namespace
+
+// One layer comes back as its multipole: totals exactly (the kernels are
+// normalised to them), and the profile as the multipole sampled on the grid:
+// the mean over the cells of each one-cell-wide annulus, scaled as the kernel
+// was, to float precision.
+TEST(Layered, OneLayerIsItsMultipole) {
+    const LayeredResult r = combine_layers({layer(0.01, 1.0, 2.0)}, LayeredOptions{});
+    Slab s;
+    s.sigma_a = 0.01;
+    s.sigma_s = 1.0;
+    s.thickness = 2.0;
+    const Multipole m = Multipole::converged(s, 1e-6);
+    EXPECT_NEAR(r.channel[0].R, m.total_reflectance(), 1e-6);
+    EXPECT_NEAR(r.channel[0].T, m.total_transmittance(), 1e-6);
+    const int n = LayeredOptions{}.grid;
+    double sum = 0.0;
+    std::vector<double> bin_sum(size_t(n / 2), 0.0), bin_count(size_t(n / 2), 0.0);
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const double dx = std::min(x, n - x), dy = std::min(y, n - y), rc = std::sqrt(dx * dx + dy * dy);
+            const double v = rc * r.cell <= n * r.cell / 4.0 ? m.reflectance(rc * r.cell) : 0.0;
+            sum += v * r.cell * r.cell;
+            const auto b = size_t(rc + 0.5);
+            if (b < bin_sum.size()) {
+                bin_sum[b] += v;
+                bin_count[b] += 1.0;
+            }
+        }
+    const double scale = m.total_reflectance() / sum;
+    for (size_t b : {size_t(0), size_t(1), size_t(4), size_t(12)}) {
+        const double want = scale * bin_sum[b] / bin_count[b];
+        EXPECT_NEAR(r.channel[0].R_profile[b], want, 1e-4 * want + 1e-7) << b;
+    }
+}
+
+// A slab cut in two halves and put back together by Kubelka-Munk comes close
+// to the Monte Carlo of the whole; without the correction it loses light.
+TEST(Layered, TwoHalvesAgainstMonteCarlo) {
+    const std::vector<LayerSpec> halves{layer(0.01, 1.0, 1.0), layer(0.01, 1.0, 1.0)};
+    const LayeredResult km = combine_layers(halves, LayeredOptions{});
+    LayeredOptions no_km;
+    no_km.kubelka_munk = false;
+    const LayeredResult plain = combine_layers(halves, no_km);
+    McSetup mc;
+    McLayer l;
+    l.sigma_a = 0.01;
+    l.sigma_s = 1.0;
+    l.thickness = 1.0;
+    mc.layers = {l, l};
+    mc.photons = 100000;
+    const McResult truth = trace_photons(mc);
+    EXPECT_NEAR(km.channel[0].R, truth.R, 0.02);
+    EXPECT_NEAR(km.channel[0].T, truth.T, 0.02);
+    EXPECT_GT(std::abs(plain.channel[0].T - truth.T), 2.0 * std::abs(km.channel[0].T - truth.T));
+    EXPECT_LT(plain.channel[0].R, km.channel[0].R);
+}
+
+// Thick, barely absorbing layers: 1 - R2 R1' nearly 0 at zero frequency. The
+// result stays finite and a reflectance.
+TEST(Layered, NearlyLosslessStack) {
+    const LayeredResult r = combine_layers({layer(1e-7, 5.0, 20.0), layer(1e-7, 5.0, 20.0)}, LayeredOptions{});
+    for (const ChannelResult& c : r.channel) {
+        EXPECT_TRUE(std::isfinite(c.R) && std::isfinite(c.T));
+        EXPECT_GT(c.R, 0.5);
+        EXPECT_LE(c.R + c.T, 1.0 + 1e-3);
+        for (double v : c.R_profile) EXPECT_TRUE(std::isfinite(v) && v >= 0.0);
+    }
+}
+
+// A grid far too small for the profile: the totals still come out (the
+// kernels are normalised), the tables are finite and non-negative.
+TEST(Layered, GridTooSmallStaysStable) {
+    LayeredOptions o;
+    o.grid = 16;
+    o.extent = 0.5;  // mm, for a profile that reaches tens of mm
+    const LayeredResult r = combine_layers({layer(0.01, 1.0, 2.0), layer(0.1, 2.0, 1.0)}, o);
+    for (const ChannelResult& c : r.channel) {
+        EXPECT_TRUE(std::isfinite(c.R) && std::isfinite(c.T));
+        for (double v : c.R_profile) EXPECT_TRUE(std::isfinite(v) && v >= 0.0);
+        for (double v : c.T_profile) EXPECT_TRUE(std::isfinite(v) && v >= 0.0);
+    }
+}
+
+// Channels are independent: a layer that absorbs only blue reflects less blue.
+TEST(Layered, ChannelsAreIndependent) {
+    LayerSpec l = layer(0.01, 1.0, 2.0);
+    l.sigma_a = {0.001, 0.01, 0.5};
+    const LayeredResult r = combine_layers({l, layer(0.02, 1.0, INFINITY)}, LayeredOptions{});
+    EXPECT_GT(r.channel[0].R, r.channel[1].R);
+    EXPECT_GT(r.channel[1].R, r.channel[2].R);
+    EXPECT_EQ(r.channel[0].T, 0.0);  // a semi-infinite bottom transmits nothing
+}
+
+}  // namespace st::optics
