@@ -73,6 +73,32 @@ std::vector<optics::LayerSpec> read_layers(const SlabOptions& o) {
     return layers;
 }
 
+// One channel of a layer stack as the Monte Carlo tracer's setup: absolute
+// indices from the relative etas, air above and below.
+optics::McSetup mc_setup(const std::vector<optics::LayerSpec>& layers, int channel, const SlabOptions& o) {
+    optics::McSetup setup;
+    double n = 1.0;
+    for (const optics::LayerSpec& l : layers) {
+        n *= l.eta;
+        optics::McLayer m;
+        m.sigma_a = l.sigma_a[size_t(channel)];
+        m.sigma_s = l.sigma_s[size_t(channel)];
+        m.g = l.g;
+        m.n = n;
+        m.thickness = l.thickness;
+        setup.layers.push_back(m);
+    }
+    setup.n_above = setup.n_below = 1.0;
+    setup.photons = uint64_t(o.photons);
+    setup.seed = uint64_t(o.seed);
+    setup.threads = o.threads;
+    const auto start = Clock::now();
+    setup.progress = [start](double done) {
+        if (ms_between(start, Clock::now()) > 2000.0) std::cerr << "mc: " << int(done * 100.0) << " %\n";
+    };
+    return setup;
+}
+
 optics::LayeredOptions layered_options(const SlabOptions& o) {
     optics::LayeredOptions lo;
     lo.grid = o.grid;
@@ -165,8 +191,29 @@ int slab_monte_carlo(const optics::Slab& s, const SlabOptions& o) {
 
 int cmd_slab(const SlabOptions& o) {
     if (!o.layers_file.empty()) {
-        if (o.model != "multipole") throw InputError("--layers works with --model multipole only, so far");
+        if (o.model == "dipole") throw InputError("--layers takes --model multipole or mc");
         const auto layers = read_layers(o);
+        if (o.model == "mc") {
+            nlohmann::json j = {{"model", "mc"}, {"layers", layers.size()}, {"photons", o.photons}, {"seed", o.seed}};
+            for (const char* key : {"R", "T", "T_direct", "R_stderr", "T_stderr", "specular"}) j[key] = nlohmann::json::array();
+            for (int c = 0; c < 3; ++c) {
+                const optics::McResult r = optics::trace_photons(mc_setup(layers, c, o));
+                j["R"].push_back(r.R);
+                j["T"].push_back(r.T);
+                j["T_direct"].push_back(r.T_direct);
+                j["R_stderr"].push_back(r.R_stderr);
+                j["T_stderr"].push_back(r.T_stderr);
+                j["specular"].push_back(r.specular);
+            }
+            if (o.json) {
+                std::cout << j.dump() << std::endl;
+            } else {
+                std::cout << std::setprecision(6);
+                for (const char* key : {"R", "T", "T_direct", "R_stderr", "T_stderr"})
+                    std::cout << key << " " << j[key][0] << " " << j[key][1] << " " << j[key][2] << "\n";
+            }
+            return 0;
+        }
         const optics::LayeredResult r = optics::combine_layers(layers, layered_options(o));
         nlohmann::json j = {{"model", "multipole"}, {"layers", layers.size()}, {"km", !o.no_km},
                             {"grid", o.grid}, {"cell_mm", r.cell}, {"dipole_pairs", r.dipoles}};
@@ -214,6 +261,47 @@ int cmd_slab(const SlabOptions& o) {
 }
 
 int cmd_profile(const SlabOptions& o, const std::string& out, double r_max, int samples) {
+    if (o.model == "mc") {
+        if (out.empty()) throw InputError("profile needs --out FILE (.csv or .exr)");
+        if (!(r_max > 0.0) || !std::isfinite(r_max)) throw InputError("--r-max must be a number > 0 (mm)");
+        if (samples < 2 || samples > 1000000) throw InputError("--samples must lie in [2, 1000000]");
+        std::vector<optics::LayerSpec> layers;
+        if (!o.layers_file.empty()) {
+            layers = read_layers(o);
+        } else {
+            const optics::Slab s = validated(o);
+            optics::LayerSpec l;
+            l.sigma_a = {s.sigma_a, s.sigma_a, s.sigma_a};
+            l.sigma_s = {s.sigma_s, s.sigma_s, s.sigma_s};
+            l.g = s.g;
+            l.eta = s.eta;
+            l.thickness = s.thickness;
+            layers = {l};
+            if (s.eta_below != s.eta) throw InputError("profile --model mc: give a different medium below with --layers");
+        }
+        const int channels = o.layers_file.empty() ? 1 : 3;
+        std::vector<optics::McResult> results;
+        for (int c = 0; c < channels; ++c) {
+            optics::McSetup setup = mc_setup(layers, c, o);
+            setup.bin_width = r_max / samples;
+            setup.bins = samples;
+            results.push_back(optics::trace_photons(setup));
+        }
+        std::ostringstream csv;
+        csv << std::setprecision(9) << (channels == 1 ? "r_mm,R,T\n" : "r_mm,R_r,R_g,R_b,T_r,T_g,T_b\n");
+        for (int i = 0; i < samples; ++i) {
+            csv << results[0].bin_centres[size_t(i)];
+            for (const auto& r : results) csv << ',' << r.R_profile[size_t(i)];
+            for (const auto& r : results) csv << ',' << r.T_profile[size_t(i)];
+            csv << '\n';
+        }
+        if (out.size() > 4 && out.compare(out.size() - 4, 4, ".exr") == 0)
+            throw InputError("profile --model mc writes CSV only, so far");
+        write_text_file(out, csv.str());
+        std::cerr << "profile: Monte Carlo, " << o.photons << " photons per channel, bins of " << r_max / samples
+                  << " mm\n";
+        return 0;
+    }
     if (!o.layers_file.empty()) {
         if (out.empty()) throw InputError("profile needs --out FILE (.csv or .exr)");
         const auto layers = read_layers(o);
@@ -241,7 +329,6 @@ int cmd_profile(const SlabOptions& o, const std::string& out, double r_max, int 
         return 0;
     }
     const optics::Slab s = validated(o);
-    if (o.model == "mc") throw InputError("profile does not take --model mc yet");
     if (out.empty()) throw InputError("profile needs --out FILE (.csv or .exr)");
     if (!(r_max > 0.0) || !std::isfinite(r_max)) throw InputError("--r-max must be a number > 0 (mm)");
     if (samples < 2 || samples > 1000000) throw InputError("--samples must lie in [2, 1000000]");

@@ -96,7 +96,10 @@ int main(int argc, char** argv) {
     add_slab_options(profile);
     profile->add_option("--out", profile_out, "FILE.csv or FILE.exr")->required();
     profile->add_option("--r-max", r_max, "largest radius, mm");
-    profile->add_option("--samples", samples, "number of radii");
+    profile->add_option("--samples", samples, "number of radii (Monte Carlo: bins)");
+    profile->add_option("--photons", slab_options.photons, "Monte Carlo photons per channel");
+    profile->add_option("--seed", slab_options.seed, "Monte Carlo seed");
+    profile->add_option("--threads", slab_options.threads, "Monte Carlo threads")->check(CLI::Range(1, 256));
 
     std::string technique;
     auto* sweep = app.add_subcommand("sweep", "a technique's model along sweeps of its inputs, on both backends");

@@ -155,6 +155,10 @@ case "$case_name" in
     layered=$("$bin" slab --layers "$work/layers.json" --json)
     echo "$layered"
     echo "$layered" | grep -q '"R":\[[0-9.e-]*,[0-9.e-]*,[0-9.e-]*\]' || fail "layers: R is not a list of three"
+    mcl=$("$bin" slab --layers "$work/layers.json" --model mc --photons 20000 --json)
+    echo "$mcl" | grep -q '"R_stderr":\[' || fail "layers mc: no per-channel R_stderr"
+    "$bin" profile --layers "$work/layers.json" --model mc --photons 20000 --r-max 5 --samples 20 --out "$work/mc.csv" 2>/dev/null
+    [ "$(wc -l <"$work/mc.csv")" -eq 21 ] || fail "layers mc profile: 20 bins expected"
     printf '[]' >"$work/empty.json"
     expect_slab_error "empty layer list" --layers "$work/empty.json"
     printf '[{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":"inf"},{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":1}]' >"$work/inf.json"
