@@ -13,6 +13,7 @@
 #include "optics/layered.h"
 #include "optics/monte_carlo.h"
 #include "optics/multipole.h"
+#include "optics/rough_surface.h"
 #include "raster/stage_times.h"
 #include "scene/input_error.h"
 #include "scene/json_reader.h"
@@ -60,8 +61,9 @@ std::vector<optics::LayerSpec> read_layers(const SlabOptions& o) {
             } else {
                 l.thickness = r.number("thickness", 1e-12, 1e9);
             }
-            if (r.has("roughness"))
-                throw InputError("layer " + std::to_string(i) + ": rough surfaces (Eq. 23-26) are not implemented yet");
+            l.roughness = r.number_or("roughness", 0.0, 0.0, 10.0);
+            if (l.roughness > 0.0 && o.model == "mc")
+                throw InputError("layer " + std::to_string(i) + ": --model mc has smooth surfaces only, so far");
             r.finish();
             layers.push_back(l);
         }
@@ -136,6 +138,11 @@ optics::Slab validated(const SlabOptions& o) {
         s.thickness = d;
     }
     if (!(s.sigma_t_reduced() > 0.0)) throw InputError("the medium neither scatters nor absorbs (sigma_t' = 0)");
+    if (!(o.roughness >= 0.0 && o.roughness <= 10.0)) throw InputError("--roughness must lie in [0, 10]");
+    if (o.roughness > 0.0) {
+        if (o.model == "mc") throw InputError("--model mc has smooth surfaces only, so far");
+        s.boundary_factor_top = optics::rough_boundary_factor(o.roughness, s.eta);
+    }
     if (!(o.tolerance > 0.0 && o.tolerance < 1.0)) throw InputError("--tolerance must lie in (0, 1)");
     if (o.pairs < -1 || o.pairs > 1000000) throw InputError("--pairs must lie in [0, 1000000]");
     // About 1 us per photon per core on this machine for albedos near 0.9;
@@ -251,6 +258,14 @@ int cmd_slab(const SlabOptions& o) {
                         {"sigma_tr", s.sigma_tr()},
                         {"albedo_reduced", s.albedo_reduced()}};
     if (o.model == "multipole" && o.pairs < 0) j["tolerance"] = o.tolerance;
+    if (o.roughness > 0.0) {
+        // Eq. 24-26: what a renderer applies at entry and exit (Eq. 25).
+        const optics::RoughSurface surface(o.roughness, s.eta);
+        j["roughness"] = o.roughness;
+        j["rho_d"] = optics::RoughSurface(o.roughness, 1.0 / s.eta).rho_d();
+        j["A"] = s.boundary_factor_top;
+        j["rho_dt"] = surface.rho_dt_table(16);  // at cos theta = (i + 0.5) / 16
+    }
     if (o.json) {
         std::cout << j.dump() << std::endl;
     } else {

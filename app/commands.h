@@ -33,6 +33,7 @@ struct SlabOptions {
     int pairs = -1;         // -1: from the tolerance
     double tolerance = 1e-6;
     std::string source = "first-scatter";  // first-scatter | paper (diffusion source depth)
+    double roughness = 0;     // RMS slope of the top surface (Beckmann), 0 = smooth
     std::string layers_file;  // --layers: replaces the single-layer options
     bool no_km = false;
     int grid = 256;

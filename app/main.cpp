@@ -73,6 +73,7 @@ int main(int argc, char** argv) {
         cmd->add_option("--eta", slab_options.eta, "index of the slab relative to the medium above");
         cmd->add_option("--eta-below", slab_options.eta_below, "relative to the medium below (default: --eta)");
         cmd->add_option("--thickness", slab_options.thickness, "mm, or inf");
+        cmd->add_option("--roughness", slab_options.roughness, "RMS slope of a rough top surface (Beckmann)");
         cmd->add_option("--layers", slab_options.layers_file, "a JSON list of layers, top first (replaces the above)");
         cmd->add_flag("--no-km", slab_options.no_km, "layers: drop the frequency-space correction (first term only)");
         cmd->add_option("--grid", slab_options.grid, "layers: FFT grid size (power of two)");

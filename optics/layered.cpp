@@ -21,6 +21,7 @@
 #include <kissfft/kiss_fftr.h>
 
 #include "optics/multipole.h"
+#include "optics/rough_surface.h"
 
 namespace st::optics {
 
@@ -148,8 +149,10 @@ LayeredResult combine_layers(const std::vector<LayerSpec>& layers, const Layered
             s.eta = index[i + 1] / index[i];
             s.eta_below = index[i + 1] / index[i + 2];
             s.thickness = L.thickness;
+            if (L.roughness > 0.0) s.boundary_factor_top = rough_boundary_factor(L.roughness, s.eta);
             Slab flipped = s;
             std::swap(flipped.eta, flipped.eta_below);
+            std::swap(flipped.boundary_factor_top, flipped.boundary_factor_bottom);
             const Multipole down = Multipole::converged(s, o.tolerance);
             const Multipole up = Multipole::converged(flipped, o.tolerance);
             result.dipoles[i] = std::max({result.dipoles[i], down.dipoles(), up.dipoles()});

@@ -15,6 +15,7 @@ struct LayerSpec {
     double g = 0;
     double eta = 1;  // index relative to the medium above (the layer above, or air)
     double thickness = 1;  // mm, may be infinite for the last layer
+    double roughness = 0;  // RMS slope of the layer's top surface (Beckmann); 0 = smooth
 };
 
 struct LayeredOptions {

@@ -41,12 +41,15 @@ Multipole::Multipole(const Slab& slab, int n, SourceDepth source) : slab_(slab),
         l = l * (1.0 - x / std::expm1(x));
         alpha_ *= scatters;
     }
-    const double zb_top = 2.0 * boundary_factor(slab.eta) * D;
+    const double a_top = slab.boundary_factor_top > 0.0 ? slab.boundary_factor_top : boundary_factor(slab.eta);
+    const double zb_top = 2.0 * a_top * D;
     if (slab.semi_infinite()) {
         sources_.push_back({l, -l - 2.0 * zb_top});  // Eq. 3's dipole
         return;
     }
-    const double zb_bottom = 2.0 * boundary_factor(slab.eta_below) * D;
+    const double a_bottom =
+        slab.boundary_factor_bottom > 0.0 ? slab.boundary_factor_bottom : boundary_factor(slab.eta_below);
+    const double zb_bottom = 2.0 * a_bottom * D;
     const double period = 2.0 * (slab.thickness + zb_top + zb_bottom);  // Eq. 16
     for (int i = -n; i <= n; ++i)
         sources_.push_back({i * period + l, i * period - l - 2.0 * zb_top});
@@ -86,7 +89,9 @@ double Multipole::total_reflectance() const {
     if (sigma_tr_ == 0.0 && !slab_.semi_infinite()) {
         const SourcePair& c = sources_[sources_.size() / 2];  // the central pair
         const double zb_top = -(c.z_virtual + c.z_real) / 2.0;
-        const double zb_bottom = 2.0 * boundary_factor(slab_.eta_below) * slab_.diffusion_constant();
+        const double a_bottom =
+            slab_.boundary_factor_bottom > 0.0 ? slab_.boundary_factor_bottom : boundary_factor(slab_.eta_below);
+        const double zb_bottom = 2.0 * a_bottom * slab_.diffusion_constant();
         return alpha_ * non_absorbing_share(c.z_real, zb_top, zb_bottom, slab_.thickness, true);
     }
     double sum = 0.0;
@@ -99,7 +104,9 @@ double Multipole::total_transmittance() const {
     if (sigma_tr_ == 0.0) {
         const SourcePair& c = sources_[sources_.size() / 2];
         const double zb_top = -(c.z_virtual + c.z_real) / 2.0;
-        const double zb_bottom = 2.0 * boundary_factor(slab_.eta_below) * slab_.diffusion_constant();
+        const double a_bottom =
+            slab_.boundary_factor_bottom > 0.0 ? slab_.boundary_factor_bottom : boundary_factor(slab_.eta_below);
+        const double zb_bottom = 2.0 * a_bottom * slab_.diffusion_constant();
         return alpha_ * non_absorbing_share(c.z_real, zb_top, zb_bottom, slab_.thickness, false);
     }
     const double d = slab_.thickness;

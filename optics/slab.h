@@ -16,6 +16,11 @@ struct Slab {
     double eta = 1;         // index of the slab relative to the medium above
     double eta_below = 1;   // ... relative to the medium below
     double thickness = std::numeric_limits<double>::infinity();  // mm
+    // A of the top boundary (Eq. 7 or, for a rough surface, Eq. 24); 0 means
+    // "from eta by Eq. 8". Set by the caller once per material, because a
+    // rough surface's rho_d is sampled.
+    double boundary_factor_top = 0;
+    double boundary_factor_bottom = 0;  // likewise, from eta_below
 
     bool semi_infinite() const { return std::isinf(thickness); }
 
