@@ -23,6 +23,7 @@ int cmd_golden(const std::string& action, const std::vector<std::string>& scenes
                const CommonOptions& common);
 int cmd_report(const std::string& out_dir, int frames, const CommonOptions& common);
 int cmd_bench(const std::vector<std::string>& scenes, int frames, bool json, const CommonOptions& common);
+int cmd_optics_figures(const std::string& out_dir, long long photons, int threads);
 int cmd_sweep(const std::string& technique, const std::string& out_dir, const CommonOptions& common);
 
 // Single-layer optics options of `slab` and `profile` (see docs/optics.md).

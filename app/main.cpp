@@ -102,6 +102,13 @@ int main(int argc, char** argv) {
     profile->add_option("--seed", slab_options.seed, "Monte Carlo seed");
     profile->add_option("--threads", slab_options.threads, "Monte Carlo threads")->check(CLI::Range(1, 256));
 
+    long long figure_photons = 200000;
+    int figure_threads = 2;
+    auto* figures = app.add_subcommand("optics-figures", "charts and tables of docs/optics.md (Figure 2, Table 3 skin, speed/accuracy)");
+    figures->add_option("--out", out_dir, "output folder");
+    figures->add_option("--photons", figure_photons, "Monte Carlo photons per run");
+    figures->add_option("--threads", figure_threads, "Monte Carlo threads")->check(CLI::Range(1, 256));
+
     std::string technique;
     auto* sweep = app.add_subcommand("sweep", "a technique's model along sweeps of its inputs, on both backends");
     sweep->add_option("technique", technique, "thin-slab")->required()->check(CLI::IsMember({"thin-slab"}));
@@ -137,6 +144,7 @@ int main(int argc, char** argv) {
             if (*slab) return st::cmd_slab(slab_options);
             return st::cmd_profile(slab_options, profile_out, r_max, samples);
         }
+        if (*figures) return st::cmd_optics_figures(out_dir, figure_photons, figure_threads);
         if (*bench) return st::cmd_bench(scenes, frames, json, common);
         if (*sweep) return st::cmd_sweep(technique, out_dir, common);
         std::cerr << "shadertwin: no command given (try --help)\n";

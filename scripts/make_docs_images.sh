@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates the pictures and charts under docs/images/ from the built
 # binary: the eight thin-slab scenes (CPU backend; bit-identical to GL) as
-# 256x256 RGB PNGs, and the thin-slab sweep charts and tables.
+# 256x256 RGB PNGs, the thin-slab sweep charts and tables, and the optics
+# figures (docs/optics.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=build/shadertwin
@@ -18,3 +19,6 @@ done
 "$bin" sweep thin-slab --out "$tmp/sweep" >/dev/null
 cp "$tmp"/sweep/*.svg "$tmp"/sweep/thin-slab-sweep.md "$out/"
 echo "wrote $out" >&2
+# Optics: Figure 2, Table 3 skin, speed/accuracy charts and tables.
+"$bin" optics-figures --out docs/images/optics --photons 200000 >/dev/null
+echo "wrote docs/images/optics" >&2

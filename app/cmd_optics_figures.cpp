@@ -1,0 +1,289 @@
+// cmd_optics_figures.cpp: `optics-figures`, the charts and tables of
+// docs/optics.md: Figure 2 (profiles of slabs 2, 10 and 20 mean free paths
+// thick: Monte Carlo, multipole, dipole), Table 3's skin against Monte Carlo,
+// and the speed/accuracy trade-offs of the dipole-pair count and the FFT grid,
+// with the settings no other setting beats on both axes marked.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "app/commands.h"
+#include "app/svg_chart.h"
+#include "image/image_io.h"
+#include "optics/layered.h"
+#include "optics/monte_carlo.h"
+#include "optics/multipole.h"
+#include "raster/stage_times.h"
+#include "scene/input_error.h"
+
+namespace st {
+
+namespace {
+
+using namespace optics;
+
+std::string fmt(double v, int p = 4) {
+    std::ostringstream s;
+    s << std::setprecision(p) << v;
+    return s.str();
+}
+
+// Median wall time of `repeats` runs of `work`, in ms.
+template <class F>
+double time_ms(F&& work, int repeats = 5) {
+    std::vector<double> t;
+    for (int i = 0; i < repeats; ++i) {
+        const auto t0 = Clock::now();
+        work();
+        t.push_back(ms_between(t0, Clock::now()));
+    }
+    std::sort(t.begin(), t.end());
+    return t[t.size() / 2];
+}
+
+// Indices of the points no other point beats on both (smaller is better).
+std::vector<bool> pareto(const std::vector<double>& cost, const std::vector<double>& error) {
+    std::vector<bool> best(cost.size(), true);
+    for (size_t i = 0; i < cost.size(); ++i)
+        for (size_t j = 0; j < cost.size(); ++j)
+            if (j != i && cost[j] <= cost[i] && error[j] <= error[i] && (cost[j] < cost[i] || error[j] < error[i]))
+                best[i] = false;
+    return best;
+}
+
+Slab notes_slab(double d) {
+    Slab s;
+    s.sigma_a = 0.00127;
+    s.sigma_s = 0.99873;
+    s.thickness = d;
+    return s;
+}
+
+}  // namespace
+
+int cmd_optics_figures(const std::string& out_dir, long long photons, int threads) {
+    if (photons < 1000 || photons > 100000000) throw InputError("--photons must lie in [1000, 100000000]");
+    std::error_code ec;
+    std::filesystem::create_directories(out_dir, ec);
+    if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
+    std::ostringstream md;
+    md << "# Optics figures\n\n`shadertwin optics-figures --photons " << photons << "`\n\n";
+
+    // Figure 2: radial profiles at 2, 10, 20 mean free paths.
+    for (double d : {2.0, 10.0, 20.0}) {
+        std::cerr << "optics-figures: Figure 2, " << d << " mfp\n";
+        McSetup setup;
+        McLayer l;
+        l.sigma_a = 0.00127;
+        l.sigma_s = 0.99873;
+        l.thickness = d;
+        setup.layers = {l};
+        setup.photons = uint64_t(photons);
+        setup.threads = threads;
+        setup.bin_width = 0.1;
+        setup.bins = 100;
+        const McResult mc = trace_photons(setup);
+        const Multipole multi = Multipole::converged(notes_slab(d), 1e-6);
+        const Multipole paper = Multipole::converged(notes_slab(d), 1e-6, SourceDepth::MeanFreePath);
+        const Multipole dipole(notes_slab(d), 0, SourceDepth::MeanFreePath);
+        Chart ch;
+        ch.title = "Figure 2: slab " + fmt(d, 3) + " mean free paths thick (1 mm mfp, albedo' 0.99873)";
+        ch.x_label = "r (mm)";
+        ch.y_label = "R(r), T(r) per mm^2";
+        ch.log_y = true;
+        ch.x_min = 0.0;
+        ChartSeries r_mc{"R Monte Carlo", "#000000", {}, {}}, t_mc{"T Monte Carlo", "#777777", {}, {}};
+        ChartSeries r_mp{"R multipole", "#1f77b4", {}, {}}, t_mp{"T multipole", "#1f77b4", {}, {}, true};
+        ChartSeries r_pp{"R multipole, paper source", "#2ca02c", {}, {}}, r_dp{"R dipole", "#d62728", {}, {}};
+        for (int b = 0; b < setup.bins; ++b) {
+            const double r = mc.bin_centres[size_t(b)];
+            r_mc.x.push_back(r), r_mc.y.push_back(mc.R_profile[size_t(b)]);
+            t_mc.x.push_back(r), t_mc.y.push_back(mc.T_profile[size_t(b)]);
+            r_mp.x.push_back(r), r_mp.y.push_back(multi.reflectance(r));
+            t_mp.x.push_back(r), t_mp.y.push_back(multi.transmittance(r));
+            r_pp.x.push_back(r), r_pp.y.push_back(paper.reflectance(r));
+            r_dp.x.push_back(r), r_dp.y.push_back(dipole.reflectance(r));
+        }
+        ch.series = {r_mc, t_mc, r_mp, t_mp, r_pp, r_dp};
+        write_text_file(out_dir + "/figure2-" + fmt(d, 3) + "mfp.svg", ch.svg(720, 420));
+    }
+
+    // Table 3's skin: layered multipole against Monte Carlo, per channel.
+    {
+        std::cerr << "optics-figures: skin\n";
+        const std::vector<LayerSpec> skin = {
+            {{2.1, 2.1, 5.0}, {48.0, 60.0, 65.0}, 0.0, 1.4, 0.03, 0.0},
+            {{0.16, 0.19, 0.30}, {32.0, 40.0, 46.0}, 0.25, 1.34 / 1.4, 0.05, 0.0},
+            {{0.085, 1.0, 25.0}, {4.5, 4.7, 4.8}, 0.8, 1.4 / 1.34, INFINITY, 0.0}};
+        LayeredOptions lo;
+        lo.grid = 512;
+        lo.extent = 20.0;
+        const LayeredResult km = combine_layers(skin, lo);
+        Chart ch;
+        ch.title = "Table 3 skin: reflectance profile, KM-layered multipole (solid) and Monte Carlo (dashed)";
+        ch.x_label = "r (mm)";
+        ch.y_label = "R(r) per mm^2";
+        ch.log_y = true;
+        ch.x_max = 5.0;
+        const char* colours[3] = {"#d62728", "#2ca02c", "#1f77b4"};
+        const char* names[3] = {"red", "green", "blue"};
+        md << "## Table 3 skin, total diffuse reflectance\n\n| channel | KM layered multipole | Monte Carlo |\n| --- | --- | --- |\n";
+        for (int c = 0; c < 3; ++c) {
+            McSetup setup;
+            double n = 1.0;
+            for (const LayerSpec& s : skin) {
+                n *= s.eta;
+                setup.layers.push_back({s.sigma_a[size_t(c)], s.sigma_s[size_t(c)], s.g, n, s.thickness});
+            }
+            setup.photons = uint64_t(photons);
+            setup.threads = threads;
+            setup.bin_width = 0.05;
+            setup.bins = 100;
+            const McResult mc = trace_photons(setup);
+            ChartSeries k{std::string("KM ") + names[c], colours[c], km.radii, km.channel[size_t(c)].R_profile};
+            ChartSeries m{std::string("MC ") + names[c], colours[c], mc.bin_centres, mc.R_profile, true};
+            ch.series.push_back(k);
+            ch.series.push_back(m);
+            md << "| " << names[c] << " | " << fmt(km.channel[size_t(c)].R) << " | " << fmt(mc.R) << " +- "
+               << fmt(mc.R_stderr, 2) << " |\n";
+        }
+        write_text_file(out_dir + "/skin-table3.svg", ch.svg(720, 420));
+    }
+
+    // Dipole pairs against error and build time: the notes' 2 mm slab (slow
+    // convergence); error against 2000 pairs per side, over totals and the
+    // profile at 64 radii to 8 mm; time to build and tabulate.
+    {
+        std::cerr << "optics-figures: pairs\n";
+        const Slab s = notes_slab(2.0);
+        const Multipole ref(s, 2000);
+        std::vector<double> radii;
+        for (int i = 0; i < 64; ++i) radii.push_back(8.0 * i / 63.0);
+        md << "\n## Dipole pairs: accuracy against cost (2 mm slab, 1 mm mfp, albedo' 0.99873)\n\n"
+           << "| pairs per side | dipoles | max rel. error R, T totals | max rel. error of the profiles | build + 64-radius table, ms | best |\n"
+           << "| --- | --- | --- | --- | --- | --- |\n";
+        std::vector<int> ns{0, 1, 2, 3, 5, 8, 12, 16, 20, 25, 30, 35, 40, 60, 100, 200, 500, 1000};
+        std::vector<double> cost, err_total, err_profile;
+        for (int n : ns) {
+            const Multipole m(s, n);
+            const double et = std::max(std::abs(m.total_reflectance() / ref.total_reflectance() - 1.0),
+                                       std::abs(m.total_transmittance() / ref.total_transmittance() - 1.0));
+            double ep = 0.0;
+            for (double r : radii) {
+                ep = std::max(ep, std::abs(m.reflectance(r) / ref.reflectance(r) - 1.0));
+                ep = std::max(ep, std::abs(m.transmittance(r) / ref.transmittance(r) - 1.0));
+            }
+            double sink = 0.0;
+            const double ms = time_ms([&] {
+                const Multipole built(s, n);
+                for (double r : radii) sink += built.reflectance(r) + built.transmittance(r);
+            });
+            (void)sink;
+            cost.push_back(ms);
+            err_total.push_back(std::max(et, 1e-16));
+            err_profile.push_back(std::max(ep, 1e-16));
+        }
+        std::vector<double> worst(ns.size());
+        for (size_t i = 0; i < ns.size(); ++i) worst[i] = std::max(err_total[i], err_profile[i]);
+        const auto best = pareto(cost, worst);
+        Chart ch;
+        ch.title = "Dipole pairs: error against build time (marked: no other count beats it on both)";
+        ch.x_label = "build + table time (ms)";
+        ch.y_label = "max relative error";
+        ch.log_x = ch.log_y = true;
+        ChartSeries all{"all counts", "#1f77b4", cost, worst}, front{"undominated", "#d62728", {}, {}};
+        for (size_t i = 0; i < ns.size(); ++i) {
+            md << "| " << ns[i] << " | " << 2 * ns[i] + 1 << " | " << fmt(err_total[i], 3) << " | "
+               << fmt(err_profile[i], 3) << " | " << fmt(cost[i], 3) << " | " << (best[i] ? "**yes**" : "") << " |\n";
+            if (best[i]) front.x.push_back(cost[i]), front.y.push_back(worst[i]);
+        }
+        ch.series = {all, front};
+        write_text_file(out_dir + "/pairs-speed-accuracy.svg", ch.svg(720, 420));
+        const Multipole chosen = Multipole::converged(s, 1e-6);
+        md << "\nThe tolerance 1e-6 chooses " << chosen.pairs_per_side() << " pairs per side.\n";
+    }
+
+    // FFT grid and extent against error and time: two 1 mm halves of a 2 mm
+    // slab (the Monte Carlo of the whole is the truth for the totals), and
+    // the finest setting for the profile.
+    {
+        std::cerr << "optics-figures: grid\n";
+        LayerSpec half;
+        half.sigma_a = {0.01, 0.01, 0.01};
+        half.sigma_s = {1.0, 1.0, 1.0};
+        half.thickness = 1.0;
+        const std::vector<LayerSpec> halves{half, half};
+        McSetup setup;
+        McLayer l;
+        l.sigma_a = 0.01;
+        l.sigma_s = 1.0;
+        l.thickness = 2.0;
+        setup.layers = {l};
+        setup.photons = uint64_t(photons);
+        setup.threads = threads;
+        const McResult truth = trace_photons(setup);
+        LayeredOptions fine;
+        fine.grid = 1024;
+        fine.extent = 128.0;
+        const LayeredResult reference = combine_layers(halves, fine);
+        md << "\n## FFT grid and extent: accuracy against cost (two 1 mm halves of a 2 mm slab)\n\n"
+           << "Totals against the Monte Carlo of the whole slab (R " << fmt(truth.R) << " +- " << fmt(truth.R_stderr, 2)
+           << ", T " << fmt(truth.T) << " +- " << fmt(truth.T_stderr, 2)
+           << "); profile against grid 1024 over 128 mm, at radii 0.5 to 8 mm.\n\n"
+           << "| grid | extent (mm) | cell (mm) | error R, T vs MC | max rel. error of R(r) | ms | best |\n"
+           << "| --- | --- | --- | --- | --- | --- | --- |\n";
+        struct Setting { int grid; double extent; };
+        std::vector<Setting> settings;
+        for (int g : {32, 64, 128, 256, 512})
+            for (double e : {16.0, 32.0, 64.0, 128.0}) settings.push_back({g, e});
+        std::vector<double> cost, error;
+        std::vector<std::string> rows;
+        for (const Setting& st : settings) {
+            LayeredOptions o;
+            o.grid = st.grid;
+            o.extent = st.extent;
+            LayeredResult r;
+            const double ms = time_ms([&] { r = combine_layers(halves, o); }, 3);
+            const double et = std::max(std::abs(r.channel[0].R - truth.R), std::abs(r.channel[0].T - truth.T));
+            double ep = 0.0;
+            for (double radius = 0.5; radius <= 8.0; radius += 0.5) {
+                // Linear in r between annulus centres, so grids of different
+                // cells compare at the same radius.
+                auto at = [radius](const LayeredResult& x) {
+                    const double f = radius / x.cell;
+                    const size_t b = std::min(x.radii.size() - 2, size_t(f));
+                    const double t = std::min(1.0, f - double(b));
+                    return x.channel[0].R_profile[b] * (1.0 - t) + x.channel[0].R_profile[b + 1] * t;
+                };
+                ep = std::max(ep, std::abs(at(r) / at(reference) - 1.0));
+            }
+            cost.push_back(ms);
+            error.push_back(std::max(et, ep));
+            std::ostringstream row;
+            row << "| " << st.grid << " | " << st.extent << " | " << fmt(st.extent / st.grid, 3) << " | " << fmt(et, 3)
+                << " | " << fmt(ep, 3) << " | " << fmt(ms, 3) << " | ";
+            rows.push_back(row.str());
+        }
+        const auto best = pareto(cost, error);
+        Chart ch;
+        ch.title = "FFT grid x extent: error against time (marked: undominated)";
+        ch.x_label = "time for the two-layer combination (ms)";
+        ch.y_label = "max of total and profile error";
+        ch.log_x = ch.log_y = true;
+        ChartSeries all{"all settings", "#1f77b4", cost, error}, front{"undominated", "#d62728", {}, {}};
+        for (size_t i = 0; i < settings.size(); ++i) {
+            md << rows[i] << (best[i] ? "**yes**" : "") << " |\n";
+            if (best[i]) front.x.push_back(cost[i]), front.y.push_back(error[i]);
+        }
+        ch.series = {all, front};
+        write_text_file(out_dir + "/grid-speed-accuracy.svg", ch.svg(720, 420));
+    }
+    write_text_file(out_dir + "/optics-figures.md", md.str());
+    std::cout << md.str();
+    return 0;
+}
+
+}  // namespace st
