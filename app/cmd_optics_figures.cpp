@@ -54,6 +54,21 @@ std::vector<bool> pareto(const std::vector<double>& cost, const std::vector<doub
     return best;
 }
 
+// A cost/error scatter with the undominated points drawn again on top.
+void write_tradeoff(const std::string& path, const std::string& title, const std::string& x_label,
+                    const std::vector<double>& cost, const std::vector<double>& error, const std::vector<bool>& best) {
+    Chart ch;
+    ch.title = title;
+    ch.x_label = x_label;
+    ch.y_label = "max relative error";
+    ch.log_x = ch.log_y = true;
+    ChartSeries all{"all settings", "#1f77b4", cost, error}, front{"undominated", "#d62728", {}, {}};
+    for (size_t i = 0; i < cost.size(); ++i)
+        if (best[i]) front.x.push_back(cost[i]), front.y.push_back(error[i]);
+    ch.series = {all, front};
+    write_text_file(path, ch.svg(720, 420));
+}
+
 Slab notes_slab(double d) {
     Slab s;
     s.sigma_a = 0.00127;
@@ -189,19 +204,12 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
         std::vector<double> worst(ns.size());
         for (size_t i = 0; i < ns.size(); ++i) worst[i] = std::max(err_total[i], err_profile[i]);
         const auto best = pareto(cost, worst);
-        Chart ch;
-        ch.title = "Dipole pairs: error against build time (marked: no other count beats it on both)";
-        ch.x_label = "build + table time (ms)";
-        ch.y_label = "max relative error";
-        ch.log_x = ch.log_y = true;
-        ChartSeries all{"all counts", "#1f77b4", cost, worst}, front{"undominated", "#d62728", {}, {}};
-        for (size_t i = 0; i < ns.size(); ++i) {
+        for (size_t i = 0; i < ns.size(); ++i)
             md << "| " << ns[i] << " | " << 2 * ns[i] + 1 << " | " << fmt(err_total[i], 3) << " | "
                << fmt(err_profile[i], 3) << " | " << fmt(cost[i], 3) << " | " << (best[i] ? "**yes**" : "") << " |\n";
-            if (best[i]) front.x.push_back(cost[i]), front.y.push_back(worst[i]);
-        }
-        ch.series = {all, front};
-        write_text_file(out_dir + "/pairs-speed-accuracy.svg", ch.svg(720, 420));
+        write_tradeoff(out_dir + "/pairs-speed-accuracy.svg",
+                       "Dipole pairs: error against build time (red: no other count beats it on both)",
+                       "build + table time (ms)", cost, worst, best);
         const Multipole chosen = Multipole::converged(s, 1e-6);
         md << "\nThe tolerance 1e-6 chooses " << chosen.pairs_per_side() << " pairs per side.\n";
     }
@@ -268,18 +276,10 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
             rows.push_back(row.str());
         }
         const auto best = pareto(cost, error);
-        Chart ch;
-        ch.title = "FFT grid x extent: error against time (marked: undominated)";
-        ch.x_label = "time for the two-layer combination (ms)";
-        ch.y_label = "max of total and profile error";
-        ch.log_x = ch.log_y = true;
-        ChartSeries all{"all settings", "#1f77b4", cost, error}, front{"undominated", "#d62728", {}, {}};
-        for (size_t i = 0; i < settings.size(); ++i) {
-            md << rows[i] << (best[i] ? "**yes**" : "") << " |\n";
-            if (best[i]) front.x.push_back(cost[i]), front.y.push_back(error[i]);
-        }
-        ch.series = {all, front};
-        write_text_file(out_dir + "/grid-speed-accuracy.svg", ch.svg(720, 420));
+        for (size_t i = 0; i < settings.size(); ++i) md << rows[i] << (best[i] ? "**yes**" : "") << " |\n";
+        write_tradeoff(out_dir + "/grid-speed-accuracy.svg",
+                       "FFT grid x extent: error against time (red: undominated)",
+                       "time for the two-layer combination (ms)", cost, error, best);
     }
     write_text_file(out_dir + "/optics-figures.md", md.str());
     std::cout << md.str();

@@ -164,22 +164,14 @@ optics::Multipole build(const optics::Slab& s, const SlabOptions& o) {
 namespace {
 
 int slab_monte_carlo(const optics::Slab& s, const SlabOptions& o) {
-    optics::McSetup setup;
-    optics::McLayer layer;
-    layer.sigma_a = s.sigma_a;
-    layer.sigma_s = s.sigma_s;
+    optics::LayerSpec layer;
+    layer.sigma_a = {s.sigma_a, s.sigma_a, s.sigma_a};
+    layer.sigma_s = {s.sigma_s, s.sigma_s, s.sigma_s};
     layer.g = s.g;
-    layer.n = s.eta;                  // the medium above has index 1
+    layer.eta = s.eta;
     layer.thickness = s.thickness;
-    setup.layers = {layer};
-    setup.n_below = s.eta / s.eta_below;
-    setup.photons = uint64_t(o.photons);
-    setup.seed = uint64_t(o.seed);
-    setup.threads = o.threads;
-    const auto start = Clock::now();
-    setup.progress = [start](double done) {
-        if (ms_between(start, Clock::now()) > 2000.0) std::cerr << "mc: " << int(done * 100.0) << " %\n";
-    };
+    optics::McSetup setup = mc_setup({layer}, 0, o);
+    setup.n_below = s.eta / s.eta_below;  // one layer may have another medium below
     const optics::McResult r = optics::trace_photons(setup);
     nlohmann::json j = {{"model", "mc"},          {"R", r.R},           {"T", r.T},
                         {"T_direct", r.T_direct}, {"R_stderr", r.R_stderr}, {"T_stderr", r.T_stderr},
