@@ -2,7 +2,8 @@
 // docs/optics.md: Figure 2 (profiles of slabs 2, 10 and 20 mean free paths
 // thick: Monte Carlo, multipole, dipole), Table 3's skin against Monte Carlo,
 // and the speed/accuracy trade-offs of the dipole-pair count and the FFT grid,
-// with the settings no other setting beats on both axes marked.
+// with the settings no other setting beats on both axes marked; Figure 3
+// from the inferred Table 2 materials (materials/table2-*.json).
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/layer_file.h"
 #include "app/svg_chart.h"
 #include "image/image_io.h"
 #include "optics/layered.h"
@@ -124,6 +126,46 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
         }
         ch.series = {r_mc, t_mc, r_mp, t_mp, r_pp, r_dp};
         write_text_file(out_dir + "/figure2-" + fmt(d, 3) + "mfp.svg", ch.svg(720, 420));
+    }
+
+    // Figure 3: the inferred two-layer materials of Table 2, KM and no-KM
+    // against Monte Carlo (one channel: the materials are grey).
+    for (const char* name : {"left", "middle", "right"}) {
+        std::cerr << "optics-figures: Figure 3, " << name << "\n";
+        const auto layers = read_layer_file(std::string(SHADERTWIN_MATERIALS_DIR) + "/table2-" + name + ".json");
+        LayeredOptions lo;
+        lo.grid = 512;
+        lo.extent = 64.0;
+        const LayeredResult km = combine_layers(layers, lo);
+        lo.kubelka_munk = false;
+        const LayeredResult plain = combine_layers(layers, lo);
+        McSetup setup;
+        double n = 1.0;
+        for (const LayerSpec& l : layers) {
+            n *= l.eta;
+            setup.layers.push_back({l.sigma_a[0], l.sigma_s[0], l.g, n, l.thickness});
+        }
+        setup.photons = uint64_t(photons);
+        setup.threads = threads;
+        setup.bin_width = 0.1;
+        setup.bins = 100;
+        const McResult mc = trace_photons(setup);
+        Chart ch;
+        ch.title = std::string("Figure 3 (") + name + "): inferred Table 2 material, reflectance and transmittance";
+        ch.x_label = "r (mm)";
+        ch.y_label = "R(r), T(r) per mm^2";
+        ch.log_y = true;
+        ch.x_min = 0.0;
+        ch.x_max = 10.0;
+        ch.series = {{"R Monte Carlo", "#000000", mc.bin_centres, mc.R_profile},
+                     {"R KM", "#1f77b4", km.radii, km.channel[0].R_profile},
+                     {"R no KM", "#d62728", plain.radii, plain.channel[0].R_profile}};
+        if (std::isfinite(layers.back().thickness)) {
+            ch.series.push_back({"T Monte Carlo", "#777777", mc.bin_centres, mc.T_profile, true});
+            ch.series.push_back({"T KM", "#1f77b4", km.radii, km.channel[0].T_profile, true});
+            ch.series.push_back({"T no KM", "#d62728", plain.radii, plain.channel[0].T_profile, true});
+        }
+        write_text_file(out_dir + "/figure3-" + name + ".svg", ch.svg(720, 420));
     }
 
     // Table 3's skin: layered multipole against Monte Carlo, per channel.

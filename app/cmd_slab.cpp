@@ -16,7 +16,7 @@
 #include "optics/rough_surface.h"
 #include "raster/stage_times.h"
 #include "scene/input_error.h"
-#include "scene/json_reader.h"
+#include "app/layer_file.h"
 
 #include <fstream>
 
@@ -30,46 +30,13 @@ double fresnel_normal(double eta) {
     return r * r;
 }
 
-// Reads and checks a layers file: a JSON list, top layer first.
+// Reads the layers file and checks the options that go with layers.
 std::vector<optics::LayerSpec> read_layers(const SlabOptions& o) {
-    std::ifstream in(o.layers_file);
-    if (!in) throw InputError("cannot read layers file " + o.layers_file);
-    const nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
-    if (doc.is_discarded()) throw InputError(o.layers_file + ": malformed JSON");
-    if (!doc.is_array() || doc.empty()) throw InputError(o.layers_file + ": expected a non-empty JSON list of layers");
-    if (doc.size() > 64) throw InputError(o.layers_file + ": at most 64 layers");
-    std::vector<optics::LayerSpec> layers;
-    try {
-        for (size_t i = 0; i < doc.size(); ++i) {
-            JsonReader r(doc[i], std::to_string(i));
-            optics::LayerSpec l;
-            const auto a = r.numbers("sigma_a", 3, 3, 0.0, 1e9), s = r.numbers("sigma_s", 3, 3, 0.0, 1e9);
-            for (int c = 0; c < 3; ++c) {
-                l.sigma_a[size_t(c)] = a[size_t(c)];
-                l.sigma_s[size_t(c)] = s[size_t(c)];
-                if (!(a[size_t(c)] + s[size_t(c)] > 0.0))
-                    throw InputError("layer " + std::to_string(i) + " neither scatters nor absorbs in channel " +
-                                     std::to_string(c));
-            }
-            l.g = r.number("g", -0.999999, 0.999999);
-            l.eta = r.number("eta", 1e-6, 1e6);
-            const bool last = i + 1 == doc.size();
-            if (doc[i].contains("thickness") && doc[i]["thickness"] == "inf") {
-                if (!last) throw InputError("layer " + std::to_string(i) + ": only the last layer may be infinite");
-                r.string("thickness");
-                l.thickness = INFINITY;
-            } else {
-                l.thickness = r.number("thickness", 1e-12, 1e9);
-            }
-            l.roughness = r.number_or("roughness", 0.0, 0.0, 10.0);
-            if (l.roughness > 0.0 && o.model == "mc")
-                throw InputError("layer " + std::to_string(i) + ": --model mc has smooth surfaces only, so far");
-            r.finish();
-            layers.push_back(l);
-        }
-    } catch (const InputError& e) {
-        throw InputError(o.layers_file + ": " + e.what());
-    }
+    const std::vector<optics::LayerSpec> layers = read_layer_file(o.layers_file);
+    for (size_t i = 0; i < layers.size(); ++i)
+        if (layers[i].roughness > 0.0 && o.model == "mc")
+            throw InputError(o.layers_file + ": layer " + std::to_string(i) +
+                             ": --model mc has smooth surfaces only, so far");
     if (o.grid < 8 || o.grid > 4096 || (o.grid & (o.grid - 1))) throw InputError("--grid must be a power of two in [8, 4096]");
     if (!(o.extent >= 0.0) || !std::isfinite(o.extent)) throw InputError("--extent must be a number >= 0 (mm)");
     return layers;

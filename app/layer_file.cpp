@@ -1,0 +1,54 @@
+// layer_file.cpp: see layer_file.h.
+#include "app/layer_file.h"
+
+#include <cmath>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/input_error.h"
+#include "scene/json_reader.h"
+
+namespace st {
+
+std::vector<optics::LayerSpec> read_layer_file(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw InputError("cannot read layers file " + path);
+    const nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
+    if (doc.is_discarded()) throw InputError(path + ": malformed JSON");
+    if (!doc.is_array() || doc.empty()) throw InputError(path + ": expected a non-empty JSON list of layers");
+    if (doc.size() > 64) throw InputError(path + ": at most 64 layers");
+    std::vector<optics::LayerSpec> layers;
+    try {
+        for (size_t i = 0; i < doc.size(); ++i) {
+            JsonReader r(doc[i], std::to_string(i));
+            optics::LayerSpec l;
+            const auto a = r.numbers("sigma_a", 3, 3, 0.0, 1e9), s = r.numbers("sigma_s", 3, 3, 0.0, 1e9);
+            for (int c = 0; c < 3; ++c) {
+                l.sigma_a[size_t(c)] = a[size_t(c)];
+                l.sigma_s[size_t(c)] = s[size_t(c)];
+                if (!(a[size_t(c)] + s[size_t(c)] > 0.0))
+                    throw InputError("layer " + std::to_string(i) + " neither scatters nor absorbs in channel " +
+                                     std::to_string(c));
+            }
+            l.g = r.number("g", -0.999999, 0.999999);
+            l.eta = r.number("eta", 1e-6, 1e6);
+            const bool last = i + 1 == doc.size();
+            if (doc[i].contains("thickness") && doc[i]["thickness"] == "inf") {
+                if (!last) throw InputError("layer " + std::to_string(i) + ": only the last layer may be infinite");
+                r.string("thickness");
+                l.thickness = INFINITY;
+            } else {
+                l.thickness = r.number("thickness", 1e-12, 1e9);
+            }
+            l.roughness = r.number_or("roughness", 0.0, 0.0, 10.0);
+            r.finish();
+            layers.push_back(l);
+        }
+    } catch (const InputError& e) {
+        throw InputError(path + ": " + e.what());
+    }
+    return layers;
+}
+
+}  // namespace st
