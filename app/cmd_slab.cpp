@@ -33,10 +33,10 @@ double fresnel_normal(double eta) {
 // Reads the layers file and checks the options that go with layers.
 std::vector<optics::LayerSpec> read_layers(const SlabOptions& o) {
     const std::vector<optics::LayerSpec> layers = read_layer_file(o.layers_file);
-    for (size_t i = 0; i < layers.size(); ++i)
+    for (size_t i = 1; i < layers.size(); ++i)
         if (layers[i].roughness > 0.0 && o.model == "mc")
             throw InputError(o.layers_file + ": layer " + std::to_string(i) +
-                             ": --model mc has smooth surfaces only, so far");
+                             ": --model mc has a rough top surface only, not rough inner interfaces");
     if (o.grid < 8 || o.grid > 4096 || (o.grid & (o.grid - 1))) throw InputError("--grid must be a power of two in [8, 4096]");
     if (!(o.extent >= 0.0) || !std::isfinite(o.extent)) throw InputError("--extent must be a number >= 0 (mm)");
     return layers;
@@ -58,6 +58,7 @@ optics::McSetup mc_setup(const std::vector<optics::LayerSpec>& layers, int chann
         setup.layers.push_back(m);
     }
     setup.n_above = setup.n_below = 1.0;
+    setup.top_roughness = layers.front().roughness;
     setup.photons = uint64_t(o.photons);
     setup.seed = uint64_t(o.seed);
     setup.threads = o.threads;
@@ -106,10 +107,7 @@ optics::Slab validated(const SlabOptions& o) {
     }
     if (!(s.sigma_t_reduced() > 0.0)) throw InputError("the medium neither scatters nor absorbs (sigma_t' = 0)");
     if (!(o.roughness >= 0.0 && o.roughness <= 10.0)) throw InputError("--roughness must lie in [0, 10]");
-    if (o.roughness > 0.0) {
-        if (o.model == "mc") throw InputError("--model mc has smooth surfaces only, so far");
-        s.boundary_factor_top = optics::rough_boundary_factor(o.roughness, s.eta);
-    }
+    if (o.roughness > 0.0 && o.model != "mc") s.boundary_factor_top = optics::rough_boundary_factor(o.roughness, s.eta);
     if (!(o.tolerance > 0.0 && o.tolerance < 1.0)) throw InputError("--tolerance must lie in (0, 1)");
     if (o.pairs < -1 || o.pairs > 1000000) throw InputError("--pairs must lie in [0, 1000000]");
     // About 1 us per photon per core on this machine for albedos near 0.9;
@@ -137,6 +135,7 @@ int slab_monte_carlo(const optics::Slab& s, const SlabOptions& o) {
     layer.g = s.g;
     layer.eta = s.eta;
     layer.thickness = s.thickness;
+    layer.roughness = o.roughness;
     optics::McSetup setup = mc_setup({layer}, 0, o);
     setup.n_below = s.eta / s.eta_below;  // one layer may have another medium below
     const optics::McResult r = optics::trace_photons(setup);

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "optics/photon_rng.h"
+#include "optics/rough_surface.h"
 
 namespace st::optics {
 
@@ -24,7 +25,7 @@ constexpr double kRouletteWeight = 1e-4;
 constexpr double kRouletteChance = 0.1;
 
 struct Tally {
-    double R = 0, T = 0, T_direct = 0, absorbed = 0;
+    double R = 0, T = 0, T_direct = 0, absorbed = 0, specular = 0;
     std::vector<double> R_bins, T_bins;
 };
 
@@ -56,6 +57,66 @@ double fresnel(double n1, double n2, double ca1, double& ca2) {
     return 0.5 * sam * sam * (cam * cam + cap * cap) / (sap * sap * cam * cam);
 }
 
+// A photon with direction (ux, uy, uz) meets a rough interface z = const from
+// index n1 into n2. Samples a Beckmann facet normal h with density
+// D(h) (h.n) on the photon's side, reflects with probability F(i.h) or
+// refracts through h, and multiplies the weight by |i.h| G / (|i.n| |h.n|)
+// (Walter et al. 2007, Eq. 41, with the Torrance-Sparrow G of Eq. 23).
+// Returns true when the photon ends on the far side (transmitted); a
+// direction that the facet sends into the wrong half-space ends the photon
+// (w = 0), the energy the single-scattering facet model loses.
+bool rough_interface(double m, double n1, double n2, double& ux, double& uy, double& uz, double& w, PhotonRng& rng) {
+    const double side = uz > 0.0 ? -1.0 : 1.0;  // normal on the photon's side: (0, 0, side)
+    const double ix = -ux, iy = -uy, iz = -uz;  // towards where it came from
+    double hx = 0, hy = 0, hz = side, ih = 0;
+    for (int attempt = 0; attempt < 64; ++attempt) {
+        const double tan2 = -m * m * std::log(rng.uniform());
+        const double ct = 1.0 / std::sqrt(1.0 + tan2), st = std::sqrt(1.0 - ct * ct);
+        const double phi = 2.0 * kPi * rng.uniform();
+        hx = st * std::cos(phi), hy = st * std::sin(phi), hz = ct * side;
+        ih = ix * hx + iy * hy + iz * hz;
+        if (ih > 0.0) break;
+    }
+    if (ih <= 0.0) {
+        w = 0.0;
+        return false;
+    }
+    const double in = std::abs(iz), hn = std::abs(hz);
+    const double eta = n2 / n1;
+    const double F = fresnel_dielectric(ih, eta);
+    double ox, oy, oz;
+    bool transmitted;
+    if (rng.uniform() <= F) {
+        ox = 2.0 * ih * hx - ix, oy = 2.0 * ih * hy - iy, oz = 2.0 * ih * hz - iz;
+        transmitted = false;
+        if (oz * side <= 0.0) {
+            w = 0.0;
+            return false;
+        }
+    } else {
+        const double e = 1.0 / eta;  // n1 / n2
+        const double ct2 = 1.0 - e * e * (1.0 - ih * ih);
+        if (ct2 <= 0.0) {  // cannot happen with F < 1, kept for safety
+            w = 0.0;
+            return false;
+        }
+        const double k = e * ih - std::sqrt(ct2);
+        ox = k * hx - e * ix, oy = k * hy - e * iy, oz = k * hz - e * iz;
+        transmitted = true;
+        if (oz * side >= 0.0) {
+            w = 0.0;
+            return false;
+        }
+    }
+    const double len = std::sqrt(ox * ox + oy * oy + oz * oz);
+    ox /= len, oy /= len, oz /= len;
+    const double on = std::abs(oz), oh = std::abs(ox * hx + oy * hy + oz * hz);
+    const double G = std::min({1.0, 2.0 * hn * on / oh, 2.0 * hn * in / ih});
+    w *= ih * G / (in * hn);
+    ux = ox, uy = oy, uz = oz;
+    return transmitted;
+}
+
 double henyey_greenstein_cosine(double g, PhotonRng& rng) {
     const double xi = rng.uniform();
     if (g == 0.0) return 2.0 * xi - 1.0;
@@ -73,6 +134,13 @@ public:
     void trace_one(PhotonRng& rng, Tally& t) const {
         double x = 0, y = 0, z = 0, ux = 0, uy = 0, uz = 1;
         double w = 1.0 - specular();
+        if (s_.top_roughness > 0.0) {
+            w = 1.0;
+            if (!rough_interface(s_.top_roughness, s_.n_above, s_.layers[0].n, ux, uy, uz, w, rng)) {
+                t.specular += w;  // reflected by the surface (or lost in it, w = 0)
+                return;
+            }
+        }
         size_t layer = 0;
         bool scattered = false, alive = true;
         double step_left = 0.0;  // dimensionless (optical) step still to go
@@ -90,7 +158,7 @@ public:
                 y += to_boundary * uy;
                 z = uz > 0.0 ? z_top_[layer + 1] : z_top_[layer];
                 if (mut > 0.0) step_left -= to_boundary * mut;
-                cross(rng, t, x, y, ux, uy, uz, w, layer, scattered, alive);
+                cross(rng, t, x, y, ux, uy, uz, w, layer, scattered, alive, w);
             } else {
                 x += step * ux;
                 y += step * uy;
@@ -109,18 +177,36 @@ public:
         }
     }
 
+    // The smooth top surface's normal-incidence reflection, taken out of the
+    // launch weight; a rough top samples it instead.
     double specular() const {
+        if (s_.top_roughness > 0.0) return 0.0;
         const double r = (s_.n_above - s_.layers[0].n) / (s_.n_above + s_.layers[0].n);
         return r * r;
     }
 
 private:
     void cross(PhotonRng& rng, Tally& t, double x, double y, double& ux, double& uy, double& uz, double w,
-               size_t& layer, bool scattered, bool& alive) const {
+               size_t& layer, bool scattered, bool& alive, double& w_out) const {
         const bool up = uz < 0.0;
         const double n1 = s_.layers[layer].n;
         const bool leaves = up ? layer == 0 : layer + 1 == s_.layers.size();
         const double n2 = leaves ? (up ? s_.n_above : s_.n_below) : s_.layers[up ? layer - 1 : layer + 1].n;
+        if (up && leaves && s_.top_roughness > 0.0) {
+            double wr = w;
+            if (rough_interface(s_.top_roughness, n1, n2, ux, uy, uz, wr, rng)) {
+                const double radius = std::sqrt(x * x + y * y);
+                const int bin = int(radius / s_.bin_width);
+                t.R += wr;
+                if (bin < s_.bins) t.R_bins[size_t(bin)] += wr;
+                alive = false;
+            } else if (wr == 0.0) {
+                alive = false;  // lost in the facet model
+            } else {
+                w_out = wr;  // reflected back inside, weight changed
+            }
+            return;
+        }
         double ca2 = 0.0;
         const double r = fresnel(n1, n2, std::abs(uz), ca2);
         if (rng.uniform() <= r) {  // reflected
@@ -221,6 +307,7 @@ McResult trace_photons(const McSetup& setup) {
         r.T += t.T;
         r.T_direct += t.T_direct;
         r.absorbed += t.absorbed;
+        r.specular += t.specular / total;
         chunk_r.push_back(t.R / n);
         chunk_t.push_back(t.T / n);
         for (int b = 0; b < setup.bins; ++b) {

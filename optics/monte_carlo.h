@@ -25,6 +25,9 @@ struct McLayer {
 struct McSetup {
     std::vector<McLayer> layers;  // top first
     double n_above = 1, n_below = 1;
+    // RMS slope of a rough top surface (Beckmann facets, as optics/
+    // rough_surface.h); 0 = smooth. The other interfaces are smooth.
+    double top_roughness = 0;
     uint64_t photons = 100000;
     uint64_t seed = 1;
     int threads = 2;
@@ -35,7 +38,7 @@ struct McSetup {
 };
 
 struct McResult {
-    double specular = 0;               // reflected at the top surface on entry
+    double specular = 0;               // reflected at the top surface on entry (sampled when rough)
     double R = 0, T = 0, T_direct = 0; // diffuse reflectance, diffuse and unscattered transmittance
     double absorbed = 0;
     double R_stderr = 0, T_stderr = 0; // standard errors from the spread over chunks

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "optics/rough_surface.h"
 #include "reference/isotropic_slab.h"
 
 namespace st::optics {
@@ -54,6 +55,25 @@ TEST(MonteCarlo, MatchesExactIsotropicSlab) {
     const SlabFluxes ex = isotropic_slab_exact(2.0, 0.9, 1.0);
     EXPECT_NEAR(r.R, ex.reflectance, 4.0 * r.R_stderr + 2e-5);
     EXPECT_NEAR(r.T, ex.transmittance, 4.0 * r.T_stderr + 2e-5);
+}
+
+// A rough top surface: the light the facets reflect at normal incidence is
+// 1 - rho_dt(1) of the BRDF's quadrature (rough_surface.cpp), computed
+// independently; a nearly smooth surface behaves as the smooth one.
+TEST(MonteCarlo, RoughTopSurface) {
+    for (double m : {0.1, 0.5, 1.0}) {
+        McSetup s = slab(1.0, 9.0, 0.0, 1.5, INFINITY, 200000);
+        s.top_roughness = m;
+        const McResult r = trace_photons(s);
+        EXPECT_NEAR(r.specular, 1.0 - RoughSurface(m, 1.5).rho_dt(1.0), 0.0015) << m;
+        EXPECT_LE(r.R + r.specular + r.absorbed, 1.0 + 1e-4) << m;  // facets may lose light, never make it
+    }
+    McSetup nearly_smooth = slab(1.0, 9.0, 0.0, 1.5, INFINITY, 200000);
+    nearly_smooth.top_roughness = 0.001;
+    const McResult a = trace_photons(nearly_smooth);
+    const McResult b = trace_photons(slab(1.0, 9.0, 0.0, 1.5, INFINITY, 200000));
+    EXPECT_NEAR(a.R, b.R, 4.0 * b.R_stderr);
+    EXPECT_NEAR(a.specular, b.specular, 0.001);
 }
 
 TEST(MonteCarlo, DeterministicWhateverTheThreads) {
