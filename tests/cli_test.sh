@@ -183,6 +183,15 @@ case "$case_name" in
     [ "$rc" -eq 2 ] || fail "profile to a missing folder: exit $rc"
     ;;
 
+  optics_figures)
+    # The docs generator runs end to end (few photons: shape, not accuracy).
+    "$bin" optics-figures --out "$work" --photons 2000 >"$work/figures.md" 2>/dev/null
+    for f in figure2-2mfp.svg figure3-left.svg skin-table3.svg pairs-speed-accuracy.svg grid-speed-accuracy.svg optics-figures.md; do
+      [ -s "$work/$f" ] || fail "optics-figures wrote no $f"
+    done
+    grep -q "undominated" "$work/grid-speed-accuracy.svg" || fail "no undominated series"
+    ;;
+
   sweep_thin_slab)
     # No NaN, no break anywhere along the sweeps, on both backends.
     "$bin" sweep thin-slab --out "$work" >"$work/sweep.md" || { cat "$work/sweep.md"; fail "sweep found a break"; }
