@@ -76,6 +76,16 @@ case "$case_name" in
     ls -A "$work" | grep -q '^\.tmp' && fail "temporary files left behind"
     "$bin" diff "$work/triangles-basic.cpu.exr" "$work/triangles-basic.gl.exr" --json --out "$work/d.png"
     [ -s "$work/d.png" ] || fail "diff wrote no heat map"
+    "$bin" render triangles-odd-size --out "$work" >/dev/null
+    set +e
+    "$bin" diff "$work/triangles-basic.cpu.exr" "$work/triangles-odd-size.cpu.exr" --out "$work/d2.png" 2>"$work/err"
+    rc=$?
+    set -e
+    [ "$rc" -eq 2 ] || fail "diff of different sizes: exit $rc"
+    [ "$(wc -l <"$work/err")" -eq 1 ] || fail "diff of different sizes: not one line"
+    [ -e "$work/d2.png" ] && fail "diff of different sizes wrote a heat map"
+    set +e; "$bin" diff "$work/none.exr" "$work/triangles-basic.cpu.exr" 2>/dev/null; rc=$?; set -e
+    [ "$rc" -eq 2 ] || fail "diff of a missing file: exit $rc"
     ;;
 
   overrides)
