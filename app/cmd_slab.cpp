@@ -128,15 +128,20 @@ optics::Multipole build(const optics::Slab& s, const SlabOptions& o) {
 
 namespace {
 
-int slab_monte_carlo(const optics::Slab& s, const SlabOptions& o) {
+// The single-layer options as a grey layer of a stack.
+optics::LayerSpec grey_layer(const optics::Slab& s, double roughness) {
     optics::LayerSpec layer;
     layer.sigma_a = {s.sigma_a, s.sigma_a, s.sigma_a};
     layer.sigma_s = {s.sigma_s, s.sigma_s, s.sigma_s};
     layer.g = s.g;
     layer.eta = s.eta;
     layer.thickness = s.thickness;
-    layer.roughness = o.roughness;
-    optics::McSetup setup = mc_setup({layer}, 0, o);
+    layer.roughness = roughness;
+    return layer;
+}
+
+int slab_monte_carlo(const optics::Slab& s, const SlabOptions& o) {
+    optics::McSetup setup = mc_setup({grey_layer(s, o.roughness)}, 0, o);
     setup.n_below = s.eta / s.eta_below;  // one layer may have another medium below
     const optics::McResult r = optics::trace_photons(setup);
     nlohmann::json j = {{"model", "mc"},          {"R", r.R},           {"T", r.T},
@@ -238,19 +243,15 @@ int cmd_profile(const SlabOptions& o, const std::string& out, double r_max, int 
         if (out.empty()) throw InputError("profile needs --out FILE (.csv or .exr)");
         if (!(r_max > 0.0) || !std::isfinite(r_max)) throw InputError("--r-max must be a number > 0 (mm)");
         if (samples < 2 || samples > 1000000) throw InputError("--samples must lie in [2, 1000000]");
+        if (out.size() > 4 && out.compare(out.size() - 4, 4, ".exr") == 0)
+            throw InputError("profile --model mc writes CSV only, so far");
         std::vector<optics::LayerSpec> layers;
         if (!o.layers_file.empty()) {
             layers = read_layers(o);
         } else {
             const optics::Slab s = validated(o);
-            optics::LayerSpec l;
-            l.sigma_a = {s.sigma_a, s.sigma_a, s.sigma_a};
-            l.sigma_s = {s.sigma_s, s.sigma_s, s.sigma_s};
-            l.g = s.g;
-            l.eta = s.eta;
-            l.thickness = s.thickness;
-            layers = {l};
             if (s.eta_below != s.eta) throw InputError("profile --model mc: give a different medium below with --layers");
+            layers = {grey_layer(s, o.roughness)};
         }
         const int channels = o.layers_file.empty() ? 1 : 3;
         std::vector<optics::McResult> results;
@@ -268,8 +269,6 @@ int cmd_profile(const SlabOptions& o, const std::string& out, double r_max, int 
             for (const auto& r : results) csv << ',' << r.T_profile[size_t(i)];
             csv << '\n';
         }
-        if (out.size() > 4 && out.compare(out.size() - 4, 4, ".exr") == 0)
-            throw InputError("profile --model mc writes CSV only, so far");
         write_text_file(out, csv.str());
         std::cerr << "profile: Monte Carlo, " << o.photons << " photons per channel, bins of " << r_max / samples
                   << " mm\n";
