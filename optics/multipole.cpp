@@ -42,17 +42,38 @@ Multipole::Multipole(const Slab& slab, int n, SourceDepth source) : slab_(slab),
         alpha_ *= scatters;
     }
     const double a_top = slab.boundary_factor_top > 0.0 ? slab.boundary_factor_top : boundary_factor(slab.eta);
-    const double zb_top = 2.0 * a_top * D;
+    z_source_ = l;
+    zb_top_ = 2.0 * a_top * D;
     if (slab.semi_infinite()) {
-        sources_.push_back({l, -l - 2.0 * zb_top});  // Eq. 3's dipole
+        sources_.push_back(pair(0));  // Eq. 3's dipole
         return;
     }
     const double a_bottom =
         slab.boundary_factor_bottom > 0.0 ? slab.boundary_factor_bottom : boundary_factor(slab.eta_below);
-    const double zb_bottom = 2.0 * a_bottom * D;
-    const double period = 2.0 * (slab.thickness + zb_top + zb_bottom);  // Eq. 16
-    for (int i = -n; i <= n; ++i)
-        sources_.push_back({i * period + l, i * period - l - 2.0 * zb_top});
+    zb_bottom_ = 2.0 * a_bottom * D;
+    period_ = 2.0 * (slab.thickness + zb_top_ + zb_bottom_);  // Eq. 16
+    for (int i = -n; i <= n; ++i) sources_.push_back(pair(i));
+}
+
+SourcePair Multipole::pair(int i) const {
+    return {i * period_ + z_source_, i * period_ - z_source_ - 2.0 * zb_top_};
+}
+
+// The profile of the sources at i P + c for |i| > n, the series' tail, as
+// an integral over i (midpoint rule): a source's profile z (1 + s rho)
+// e^(-s rho) / (4 pi rho^3) is the z-derivative of -e^(-s rho) / (4 pi rho),
+// rho = sqrt(r^2 + z^2), so the tail is a difference of two such terms, with
+// an error of the order of the profile's second derivative in i. Without it
+// a nearly non-absorbing slab's profiles converge like 1/n^2 (each pair is a
+// dipole whose field falls as 1/z^3) and need 10^5 pairs and more.
+double Multipole::series_tail(double c, double r) const {
+    if (!whole_series_ || slab_.semi_infinite()) return 0.0;
+    auto Q = [&](double z) {
+        const double rho = std::sqrt(r * r + z * z);
+        return -std::exp(-sigma_tr_ * rho) / (4.0 * kPi * rho);
+    };
+    const double edge = (pairs_per_side() + 0.5) * period_;
+    return (Q(c - edge) - Q(c + edge)) / period_;
 }
 
 // A truncated image series, or the cancellation of nearly equal terms far
@@ -62,6 +83,8 @@ double Multipole::reflectance(double r) const {
     double sum = 0.0;
     for (const SourcePair& s : sources_)
         sum += point_profile(s.z_real, r, sigma_tr_) - point_profile(s.z_virtual, r, sigma_tr_);
+    const SourcePair c = pair(0);
+    sum += series_tail(c.z_real, r) - series_tail(c.z_virtual, r);
     return std::max(0.0, alpha_ * sum);
 }
 
@@ -71,28 +94,36 @@ double Multipole::transmittance(double r) const {
     double sum = 0.0;
     for (const SourcePair& s : sources_)
         sum += point_profile(d - s.z_real, r, sigma_tr_) - point_profile(d - s.z_virtual, r, sigma_tr_);
+    const SourcePair c = pair(0);
+    sum += series_tail(d - c.z_real, r) - series_tail(d - c.z_virtual, r);  // d - (i P + c): the lattice (-i) P + d - c
     return std::max(0.0, alpha_ * sum);
 }
 
-// Without absorption sigma_tr = 0 and every pair's total cancels but the
-// first, while the series' sum does not (it converges only for sigma_tr > 0).
-// Its limit is the diffusion solution of a non-absorbing slab: a fluence
-// linear between the extrapolated boundaries, split at the source depth.
+// The whole image series' totals in closed form. The sources of one kind sit
+// at i P + c for every integer i; with a = c mod P in (0, P) their totals sum
+// to two geometric series,
+//   sum_i sign(i P + c) e^(-s |i P + c|) / 2 = (e^(-s a) - e^(-s (P - a))) / (2 (1 - e^(-s P))),
+// which tends to (P - 2 a) / (2 P) as s -> 0: the absorption-free limit, the
+// diffusion solution of a non-absorbing slab (fluence linear between the
+// extrapolated boundaries), where every truncated sum cancels to the first
+// pair and a truncated sum of a nearly non-absorbing slab needs 10^4-10^5
+// pairs to settle.
 namespace {
-double non_absorbing_share(double z_source, double zb_top, double zb_bottom, double d, bool reflected) {
-    const double span = d + zb_top + zb_bottom;
-    return reflected ? (d + zb_bottom - z_source) / span : (z_source + zb_top) / span;
+double image_series_total(double c, double period, double s) {
+    double a = std::fmod(c, period);
+    if (a < 0.0) a += period;
+    if (a == 0.0) return 0.0;  // a source on the surface, and its images symmetric about it
+    const double b = period - a;
+    if (s * period == 0.0) return (b - a) / (2.0 * period);
+    return (std::expm1(-s * a) - std::expm1(-s * b)) / (-2.0 * std::expm1(-s * period));
 }
 }  // namespace
 
 double Multipole::total_reflectance() const {
-    if (sigma_tr_ == 0.0 && !slab_.semi_infinite()) {
-        const SourcePair& c = sources_[sources_.size() / 2];  // the central pair
-        const double zb_top = -(c.z_virtual + c.z_real) / 2.0;
-        const double a_bottom =
-            slab_.boundary_factor_bottom > 0.0 ? slab_.boundary_factor_bottom : boundary_factor(slab_.eta_below);
-        const double zb_bottom = 2.0 * a_bottom * slab_.diffusion_constant();
-        return alpha_ * non_absorbing_share(c.z_real, zb_top, zb_bottom, slab_.thickness, true);
+    if (!slab_.semi_infinite() && (whole_series_ || sigma_tr_ == 0.0)) {
+        const SourcePair c = pair(0);
+        return alpha_ * (image_series_total(c.z_real, period_, sigma_tr_) -
+                         image_series_total(c.z_virtual, period_, sigma_tr_));
     }
     double sum = 0.0;
     for (const SourcePair& s : sources_) sum += point_total(s.z_real, sigma_tr_) - point_total(s.z_virtual, sigma_tr_);
@@ -101,15 +132,13 @@ double Multipole::total_reflectance() const {
 
 double Multipole::total_transmittance() const {
     if (slab_.semi_infinite()) return 0.0;
-    if (sigma_tr_ == 0.0) {
-        const SourcePair& c = sources_[sources_.size() / 2];
-        const double zb_top = -(c.z_virtual + c.z_real) / 2.0;
-        const double a_bottom =
-            slab_.boundary_factor_bottom > 0.0 ? slab_.boundary_factor_bottom : boundary_factor(slab_.eta_below);
-        const double zb_bottom = 2.0 * a_bottom * slab_.diffusion_constant();
-        return alpha_ * non_absorbing_share(c.z_real, zb_top, zb_bottom, slab_.thickness, false);
-    }
     const double d = slab_.thickness;
+    if (whole_series_ || sigma_tr_ == 0.0) {
+        // d - (i P + c) runs over the same lattice as (-i) P + (d - c).
+        const SourcePair c = pair(0);
+        return alpha_ * (image_series_total(d - c.z_real, period_, sigma_tr_) -
+                         image_series_total(d - c.z_virtual, period_, sigma_tr_));
+    }
     double sum = 0.0;
     for (const SourcePair& s : sources_)
         sum += point_total(d - s.z_real, sigma_tr_) - point_total(d - s.z_virtual, sigma_tr_);
@@ -117,33 +146,64 @@ double Multipole::total_transmittance() const {
 }
 
 Multipole Multipole::converged(const Slab& slab, double tolerance, SourceDepth source, int max_pairs_per_side) {
-    if (slab.semi_infinite()) return Multipole(slab, 0, source);
-    auto measures = [](const Multipole& mp) {
-        return std::array<double, 4>{mp.total_reflectance(), mp.total_transmittance(), mp.reflectance(0.0),
-                                     mp.transmittance(0.0)};
+    Multipole m(slab, 0, source);
+    m.whole_series_ = true;
+    if (slab.semi_infinite()) return m;
+    // The totals are exact (above); the pairs serve the profiles. Measured at
+    // r = 0, one period and four (as far as a layering kernel reaches), each
+    // profile is a running sum over the pairs +-k, built up one k at a time,
+    // plus the tail beyond.
+    // Each further pair sits one period deeper, so its change shrinks by a
+    // factor q, about e^(-sigma_tr P) times an algebraic factor: stop when the
+    // last change plus the geometric tail it implies, delta q / (1 - q), is
+    // within tolerance of every measure; q from two successive changes.
+    const double d = slab.thickness;
+    const std::array<double, 3> radii{0.0, m.period_, 4.0 * m.period_};
+    constexpr size_t kMeasures = 6;  // R and T at each radius
+    auto add_pair = [&](const SourcePair& p, std::array<double, kMeasures>& sum) {
+        for (size_t k = 0; k < radii.size(); ++k) {
+            sum[k] += point_profile(p.z_real, radii[k], m.sigma_tr_) - point_profile(p.z_virtual, radii[k], m.sigma_tr_);
+            sum[k + 3] +=
+                point_profile(d - p.z_real, radii[k], m.sigma_tr_) - point_profile(d - p.z_virtual, radii[k], m.sigma_tr_);
+        }
     };
-    // Each further pair sits one period deeper, so its contribution shrinks
-    // by about a constant factor q = e^(-sigma_tr period) (times an algebraic
-    // factor): the series is geometric. Stop when the last pair's change plus
-    // the geometric tail it implies, delta q / (1 - q), is within tolerance of
-    // every measure; q is estimated from two successive changes.
-    std::array<double, 4> prev = measures(Multipole(slab, 0, source)), cur = measures(Multipole(slab, 1, source));
-    std::array<double, 4> prev_delta{};
-    for (size_t k = 0; k < 4; ++k) prev_delta[k] = std::abs(cur[k] - prev[k]);
-    for (int n = 1; n < max_pairs_per_side; ++n) {
-        const std::array<double, 4> next = measures(Multipole(slab, n + 1, source));
-        bool done = true;
-        for (size_t k = 0; k < 4; ++k) {
-            const double delta = std::abs(next[k] - cur[k]);
-            const double q = prev_delta[k] > 0.0 ? delta / prev_delta[k] : 0.0;
+    // The running sums plus the tail beyond pair n, as the profiles add it.
+    auto with_tail = [&](const std::array<double, kMeasures>& sum, int n) {
+        std::array<double, kMeasures> v = sum;
+        m.sources_.assign(size_t(2 * n + 1), SourcePair{});  // pairs_per_side() = n
+        const SourcePair c = m.pair(0);
+        for (size_t k = 0; k < radii.size(); ++k) {
+            v[k] += m.series_tail(c.z_real, radii[k]) - m.series_tail(c.z_virtual, radii[k]);
+            v[k + 3] += m.series_tail(d - c.z_real, radii[k]) - m.series_tail(d - c.z_virtual, radii[k]);
+        }
+        return v;
+    };
+    std::array<double, kMeasures> sum{}, prev_delta{};
+    add_pair(m.pair(0), sum);
+    std::array<double, kMeasures> cur = with_tail(sum, 0);
+    int n = 0;
+    for (int k = 1; k <= max_pairs_per_side; ++k) {
+        add_pair(m.pair(k), sum);
+        add_pair(m.pair(-k), sum);
+        const std::array<double, kMeasures> next = with_tail(sum, k);
+        bool done = k > 1;  // q needs two changes
+        for (size_t j = 0; j < kMeasures; ++j) {
+            const double delta = std::abs(next[j] - cur[j]);
+            const double q = prev_delta[j] > 0.0 ? delta / prev_delta[j] : 0.0;
             const double tail = q < 1.0 ? delta * q / (1.0 - q) : INFINITY;
-            if (delta + tail > tolerance * std::max(std::abs(next[k]), 1e-300)) done = false;
-            prev_delta[k] = delta;
+            // Relative to the profile's value at r = 0: far out a thin
+            // slab's profile is a tiny remainder of cancelling images, whose
+            // relative accuracy no table needs.
+            if (delta + tail > tolerance * std::abs(next[j < 3 ? 0 : 3])) done = false;
+            prev_delta[j] = delta;
         }
         cur = next;
-        if (done) return Multipole(slab, n, source);
+        n = k;
+        if (done) break;
     }
-    return Multipole(slab, max_pairs_per_side, source);
+    m.sources_.clear();
+    for (int i = -n; i <= n; ++i) m.sources_.push_back(m.pair(i));
+    return m;
 }
 
 }  // namespace st::optics

@@ -39,25 +39,38 @@ public:
     // A semi-infinite slab always has just the one dipole.
     Multipole(const Slab& slab, int pairs_per_side, SourceDepth source = SourceDepth::FirstScatter);
 
-    // The pairs needed so that one more pair on each side changes the totals
-    // R and T and the profiles at r = 0 by less than `tolerance` relative to
-    // their values; grows n until then (or until `max_pairs_per_side`).
+    // The whole image series: totals in closed form, with no truncation
+    // error, and profiles from n pairs plus the rest of the series as an
+    // integral, n grown until one more pair on each side changes the profiles
+    // at r = 0, one period and four periods by less than `tolerance` of their
+    // values at r = 0 (with the geometric tail the changes imply), or until
+    // `max_pairs_per_side`.
     static Multipole converged(const Slab& slab, double tolerance, SourceDepth source = SourceDepth::FirstScatter,
                                int max_pairs_per_side = 1 << 20);
 
     double reflectance(double r) const;    // R(r), Eq. 12, per mm^2
     double transmittance(double r) const;  // T(r), Eq. 13, per mm^2
-    double total_reflectance() const;      // integral of R over the plane, closed form
-    double total_transmittance() const;    // integral of T over the plane, closed form
+    // Integrals of R and T over the plane, closed form: of the 2n + 1
+    // dipoles (the paper's truncation), or of the whole series for converged()
+    // and for a non-absorbing slab (whose truncated sums cancel to the first pair).
+    double total_reflectance() const;
+    double total_transmittance() const;
 
     int dipoles() const { return int(sources_.size()); }  // 2n + 1
     int pairs_per_side() const { return (dipoles() - 1) / 2; }
     const std::vector<SourcePair>& sources() const { return sources_; }
 
 private:
+    SourcePair pair(int i) const;  // the i-th pair of Eq. 16 (0: the central dipole)
+    // Profile at r of the sources at i P + c beyond the pairs summed (|i| > n),
+    // for the whole series (converged()); 0 for a truncated one.
+    double series_tail(double c, double r) const;
+
     Slab slab_;
     SourceDepth source_;
     double alpha_ = 0, sigma_tr_ = 0;  // alpha_ includes the source's weight
+    double z_source_ = 0, zb_top_ = 0, zb_bottom_ = 0, period_ = 0;  // mm; z_b = 2 A D
+    bool whole_series_ = false;  // totals of the infinite series (converged())
     std::vector<SourcePair> sources_;
 };
 

@@ -80,11 +80,37 @@ TEST(Multipole, NotesConvergenceExample) {
     EXPECT_NEAR(Multipole(s, 5, paper).total_reflectance(), 0.549, 0.0006);
     const Multipole m = Multipole::converged(s, 1e-6, paper);
     EXPECT_NEAR(m.total_reflectance(), 0.497, 0.0006);
-    EXPECT_GT(m.pairs_per_side(), 10);
-    // Twice the pairs change nothing the tolerance can see.
-    const Multipole more(s, m.pairs_per_side() * 2, paper);
-    EXPECT_NEAR(m.total_reflectance(), more.total_reflectance(), 1e-6 * more.total_reflectance());
-    EXPECT_NEAR(m.total_transmittance(), more.total_transmittance(), 1e-6 * more.total_transmittance());
+    // converged() sums the totals' series to infinity, and its profiles (a
+    // few pairs and the rest as an integral) are within the tolerance of a
+    // long truncated sum, relative to the profile at r = 0.
+    const Multipole many(s, 400, paper);
+    EXPECT_NEAR(m.total_reflectance(), many.total_reflectance(), 1e-12);
+    EXPECT_NEAR(m.total_transmittance(), many.total_transmittance(), 1e-12);
+    EXPECT_LT(m.pairs_per_side(), 20);
+    for (double r : {0.0, 0.3, 1.0, 3.0, 10.0, 30.0}) {
+        EXPECT_NEAR(m.reflectance(r), many.reflectance(r), 1e-6 * many.reflectance(0.0)) << r;
+        EXPECT_NEAR(m.transmittance(r), many.transmittance(r), 1e-6 * many.transmittance(0.0)) << r;
+    }
+}
+
+// Nearly and exactly absorption-free slabs: a truncated series needs 10^4-10^5
+// pairs there; the whole series stays cheap and continuous in sigma_a.
+TEST(Multipole, NearlyAbsorptionFreeIsCheap) {
+    Slab s = notes_slab(1.0);
+    s.eta = 1.4;
+    s.eta_below = 1.2;
+    s.sigma_a = 0.0;
+    const Multipole none = Multipole::converged(s, 1e-6);
+    s.sigma_a = 1e-9;
+    const Multipole nearly = Multipole::converged(s, 1e-6);
+    EXPECT_LT(none.pairs_per_side(), 50);
+    EXPECT_LT(nearly.pairs_per_side(), 50);
+    EXPECT_NEAR(nearly.total_reflectance(), none.total_reflectance(), 1e-6);
+    EXPECT_NEAR(nearly.total_transmittance(), none.total_transmittance(), 1e-6);
+    for (double r : {0.0, 0.5, 2.0, 8.0}) {
+        EXPECT_NEAR(nearly.reflectance(r), none.reflectance(r), 1e-5 * none.reflectance(0.0)) << r;
+        EXPECT_NEAR(nearly.transmittance(r), none.transmittance(r), 1e-5 * none.transmittance(0.0)) << r;
+    }
 }
 
 // Table 1 (1 mm mean free path; the paper's albedo is not given: the notes'

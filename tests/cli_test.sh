@@ -169,6 +169,13 @@ case "$case_name" in
     echo "$mcl" | grep -q '"R_stderr":\[' || fail "layers mc: no per-channel R_stderr"
     "$bin" profile --layers "$work/layers.json" --model mc --photons 20000 --r-max 5 --samples 20 --out "$work/mc.csv" 2>/dev/null
     [ "$(wc -l <"$work/mc.csv")" -eq 21 ] || fail "layers mc profile: 20 bins expected"
+    # Absorption-free and nearly absorption-free layers: finite and
+    # quick (the truncated image series once took minutes here).
+    printf '[{"sigma_a":[0,1e-9,1e-6],"sigma_s":[1,1,1],"g":0,"eta":1.4,"thickness":0.5},{"sigma_a":[0,1e-9,1e-6],"sigma_s":[2,2,2],"g":0,"eta":0.9,"thickness":1}]' >"$work/lossless.json"
+    lossless=$(timeout 20 "$bin" slab --layers "$work/lossless.json" --json) || fail "absorption-free layers: failed or slower than 20 s"
+    echo "$lossless"
+    echo "$lossless" | grep -q -i 'nan\|inf' && fail "absorption-free layers: not finite"
+    timeout 20 "$bin" profile --layers "$work/lossless.json" --out "$work/lossless.csv" || fail "absorption-free profile: failed or slower than 20 s"
     printf '[]' >"$work/empty.json"
     expect_slab_error "empty layer list" --layers "$work/empty.json"
     printf '[{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":"inf"},{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":1}]' >"$work/inf.json"
