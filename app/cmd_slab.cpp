@@ -225,7 +225,7 @@ int cmd_slab(const SlabOptions& o) {
         // Eq. 24-26: what a renderer applies at entry and exit (Eq. 25).
         const optics::RoughSurface surface(o.roughness, s.eta);
         j["roughness"] = o.roughness;
-        j["rho_d"] = optics::RoughSurface(o.roughness, 1.0 / s.eta).rho_d();
+        j["rho_d"] = optics::rough_internal_reflectance(o.roughness, s.eta);
         j["A"] = s.boundary_factor_top;
         j["rho_dt"] = surface.rho_dt_table(16);  // at cos theta = (i + 0.5) / 16
     }

@@ -88,10 +88,14 @@ std::vector<double> RoughSurface::rho_dt_table(int n) const {
     return t;
 }
 
-double rough_boundary_factor(double m, double eta) {
-    // Seen from inside: light in the medium meets the surface with relative
-    // index 1/eta (total internal reflection included).
-    const double rd = RoughSurface(m, 1.0 / eta).rho_d();
+double rough_internal_reflectance(double m, double eta, InternalReflection how) {
+    if (how == InternalReflection::Inside) return RoughSurface(m, 1.0 / eta).rho_d();
+    const double transmitted_from_outside = 1.0 - RoughSurface(m, eta).rho_d();
+    return std::clamp(1.0 - transmitted_from_outside / (eta * eta), 0.0, 1.0);
+}
+
+double rough_boundary_factor(double m, double eta, InternalReflection how) {
+    const double rd = rough_internal_reflectance(m, eta, how);
     return (1.0 + rd) / (1.0 - rd);
 }
 

@@ -20,5 +20,5 @@ done
 cp "$tmp"/sweep/*.svg "$tmp"/sweep/thin-slab-sweep.md "$out/"
 echo "wrote $out" >&2
 # Optics: Figure 2, Table 3 skin, speed/accuracy charts and tables.
-"$bin" optics-figures --out docs/images/optics --photons 200000 >/dev/null
+"$bin" optics-figures --out docs/images/optics --photons 400000 >/dev/null
 echo "wrote docs/images/optics" >&2
