@@ -1,6 +1,7 @@
 // main.cpp: the command line (see README.md and docs/ for each command).
 // Errors of any kind print one line on stderr (plus the GL log after a
 // shader compile error) and exit 2.
+#include <algorithm>
 #include <CLI/CLI.hpp>
 
 #include <iostream>
@@ -64,14 +65,16 @@ int main(int argc, char** argv) {
     add_common(bench, common);
 
     st::SlabOptions slab_options;
-    auto add_slab_options = [&slab_options](CLI::App* cmd) {
+    std::vector<CLI::Option*> eta_below_given;  // its default is --eta, so "unset" must not be a value
+    auto add_slab_options = [&slab_options, &eta_below_given](CLI::App* cmd) {
         cmd->add_option("--model", slab_options.model, "multipole, dipole or mc")
             ->check(CLI::IsMember({"multipole", "dipole", "mc"}));
         cmd->add_option("--sigma-a", slab_options.sigma_a, "absorption coefficient, 1/mm");
         cmd->add_option("--sigma-s", slab_options.sigma_s, "scattering coefficient, 1/mm");
         cmd->add_option("--g", slab_options.g, "Henyey-Greenstein mean cosine");
         cmd->add_option("--eta", slab_options.eta, "index of the slab relative to the medium above");
-        cmd->add_option("--eta-below", slab_options.eta_below, "relative to the medium below (default: --eta)");
+        eta_below_given.push_back(
+            cmd->add_option("--eta-below", slab_options.eta_below, "relative to the medium below (default: --eta)"));
         cmd->add_option("--thickness", slab_options.thickness, "mm, or inf");
         cmd->add_option("--roughness", slab_options.roughness, "RMS slope of a rough top surface (Beckmann)");
         cmd->add_option("--layers", slab_options.layers_file, "a JSON list of layers, top first (replaces the above)");
@@ -140,7 +143,8 @@ int main(int argc, char** argv) {
         if (*golden) return st::cmd_golden(action, scenes, common);
         if (*report) return st::cmd_report(out_dir, report_frames, common);
         if (*slab || *profile) {
-            if (slab_options.eta_below < 0) slab_options.eta_below = slab_options.eta;
+            if (std::none_of(eta_below_given.begin(), eta_below_given.end(), [](CLI::Option* o) { return o->count() > 0; }))
+                slab_options.eta_below = slab_options.eta;
             if (*slab) return st::cmd_slab(slab_options);
             return st::cmd_profile(slab_options, profile_out, r_max, samples);
         }

@@ -149,6 +149,7 @@ case "$case_name" in
     expect_slab_error "NaN sigma_s" --sigma-a 1 --sigma-s nan --thickness 1
     expect_slab_error "zero thickness" --sigma-a 1 --sigma-s 1 --thickness 0
     expect_slab_error "eta 0" --sigma-a 1 --sigma-s 1 --thickness 1 --eta 0
+    expect_slab_error "negative eta below" --sigma-a 1 --sigma-s 1 --thickness 1 --eta-below -2
     expect_slab_error "g = 1" --sigma-a 1 --sigma-s 1 --thickness 1 --g 1
     expect_slab_error "empty medium" --sigma-a 0 --sigma-s 0 --thickness 1
     mc=$("$bin" slab --model mc --sigma-a 1 --sigma-s 9 --g 0.75 --thickness 0.2 --photons 100000 --json)
