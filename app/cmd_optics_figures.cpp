@@ -2,7 +2,8 @@
 // docs/optics.md: Figure 2 (profiles of slabs 2, 10 and 20 mean free paths
 // thick: Monte Carlo, multipole, dipole), Table 3's skin against Monte Carlo,
 // and the speed/accuracy trade-offs of the dipole-pair count and the FFT grid,
-// with the settings no other setting beats on both axes marked; Figure 3
+// with the settings no other setting beats on both axes marked; the rough-
+// surface table (Eq. 24 both ways against Monte Carlo); Figure 3
 // from the inferred Table 2 materials (materials/table2-*.json).
 #include <algorithm>
 #include <cmath>

@@ -30,8 +30,25 @@ double fresnel_normal(double eta) {
     return r * r;
 }
 
+// The options a single slab and a stack share.
+void check_shared_options(const SlabOptions& o) {
+    if (!(o.tolerance > 0.0 && o.tolerance < 1.0)) throw InputError("--tolerance must lie in (0, 1)");
+    if (o.pairs < -1 || o.pairs > 1000000) throw InputError("--pairs must lie in [0, 1000000]");
+    // About 1 us per photon per core on this machine for albedos near 0.9;
+    // 2e8 photons is several minutes, past that a run is a mistake.
+    if (o.photons < 1 || o.photons > 200000000) throw InputError("--photons must lie in [1, 200000000]");
+    if (o.seed < 0) throw InputError("--seed must be >= 0");
+}
+
 // Reads the layers file and checks the options that go with layers.
 std::vector<optics::LayerSpec> read_layers(const SlabOptions& o) {
+    const SlabOptions defaults;
+    if (o.sigma_a != defaults.sigma_a || o.sigma_s != defaults.sigma_s || !o.thickness.empty() || o.g != defaults.g ||
+        o.eta != defaults.eta || o.eta_below != o.eta || o.roughness != defaults.roughness || o.pairs != defaults.pairs ||
+        o.source != defaults.source)
+        throw InputError("--layers replaces --sigma-a, --sigma-s, --g, --eta, --eta-below, --thickness, --roughness, "
+                         "--pairs and --source: give a layer's values in the file");
+    check_shared_options(o);
     const std::vector<optics::LayerSpec> layers = read_layer_file(o.layers_file);
     for (size_t i = 1; i < layers.size(); ++i)
         if (layers[i].roughness > 0.0 && o.model == "mc")
@@ -108,12 +125,7 @@ optics::Slab validated(const SlabOptions& o) {
     if (!(s.sigma_t_reduced() > 0.0)) throw InputError("the medium neither scatters nor absorbs (sigma_t' = 0)");
     if (!(o.roughness >= 0.0 && o.roughness <= 10.0)) throw InputError("--roughness must lie in [0, 10]");
     if (o.roughness > 0.0 && o.model != "mc") s.boundary_factor_top = optics::rough_boundary_factor(o.roughness, s.eta);
-    if (!(o.tolerance > 0.0 && o.tolerance < 1.0)) throw InputError("--tolerance must lie in (0, 1)");
-    if (o.pairs < -1 || o.pairs > 1000000) throw InputError("--pairs must lie in [0, 1000000]");
-    // About 1 us per photon per core on this machine for albedos near 0.9;
-    // 2e8 photons is several minutes, past that a run is a mistake.
-    if (o.photons < 1 || o.photons > 200000000) throw InputError("--photons must lie in [1, 200000000]");
-    if (o.seed < 0) throw InputError("--seed must be >= 0");
+    check_shared_options(o);
     return s;
 }
 

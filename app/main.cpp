@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
 
     long long figure_photons = 200000;
     int figure_threads = 2;
-    auto* figures = app.add_subcommand("optics-figures", "charts and tables of docs/optics.md (Figure 2, Table 3 skin, speed/accuracy)");
+    auto* figures = app.add_subcommand("optics-figures", "charts and tables of docs/optics.md (Figures 2-3, Table 3 skin, rough surfaces, speed/accuracy)");
     figures->add_option("--out", out_dir, "output folder");
     figures->add_option("--photons", figure_photons, "Monte Carlo photons per run");
     figures->add_option("--threads", figure_threads, "Monte Carlo threads")->check(CLI::Range(1, 256));

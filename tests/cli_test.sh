@@ -179,6 +179,8 @@ case "$case_name" in
     timeout 20 "$bin" profile --layers "$work/lossless.json" --out "$work/lossless.csv" || fail "absorption-free profile: failed or slower than 20 s"
     printf '[]' >"$work/empty.json"
     expect_slab_error "empty layer list" --layers "$work/empty.json"
+    expect_slab_error "layers with a single-layer option" --layers "$work/layers.json" --thickness 1
+    expect_slab_error "layers with zero photons" --layers "$work/layers.json" --model mc --photons 0
     printf '[{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":"inf"},{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":1}]' >"$work/inf.json"
     expect_slab_error "infinite layer above another" --layers "$work/inf.json"
     printf '[{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":1.5,"eta":1,"thickness":1}]' >"$work/g.json"
