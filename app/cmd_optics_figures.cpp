@@ -17,6 +17,7 @@
 #include "app/svg_chart.h"
 #include "image/image_io.h"
 #include "optics/layered.h"
+#include "optics/microsurface_walk.h"
 #include "optics/monte_carlo.h"
 #include "optics/diffuse_fresnel.h"
 #include "optics/multipole.h"
@@ -223,10 +224,12 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
         s.sigma_s = 9.0;
         s.eta = 1.5;
         md << "\n## Rough top surfaces (semi-infinite, sigma_a 1, sigma_s 9 /mm, g 0, eta 1.5, normal incidence)\n\n"
-           << "Diffusion columns: rho_dt(1) x multipole R with A from rho_d (Eq. 24); Monte Carlo: diffuse R per incident "
-              "photon, and the share the single-scattering facet model loses.\n\n"
-           << "| m | rho_d reciprocal | R diffusion, reciprocal | rho_d inside | R diffusion, inside | Monte Carlo R | "
-              "lost at the surface (MC) |\n| --- | --- | --- | --- | --- | --- | --- |\n";
+           << "Diffusion columns: rho_dt(1) x multipole R with A from rho_d (Eq. 24). Monte Carlo: diffuse R per incident "
+              "photon with the energy-conserving walk on the microsurface (the truth), and with single bounces, which lose "
+              "the share in the last column.\n\n"
+           << "| m | rho_d of the walk | rho_d reciprocal | R diffusion, reciprocal | rho_d inside | R diffusion, inside | "
+              "Monte Carlo R, walk | Monte Carlo R, single bounce | lost by single bounces |\n"
+              "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
         for (double m : {0.0, 0.1, 0.5, 1.0}) {
             const RoughSurface surface(m, s.eta);
             auto diffusion = [&](InternalReflection how, double& rho_d) {
@@ -243,11 +246,14 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
             setup.top_roughness = m;
             setup.photons = uint64_t(photons);
             setup.threads = threads;
-            const McResult mc = trace_photons(setup);
-            const double lost = 1.0 - mc.specular - mc.R - mc.T - mc.T_direct - mc.absorbed;
-            md << "| " << (m > 0.0 ? fmt(m) : std::string("smooth")) << " | " << fmt(rd_rec) << " | " << fmt(r_rec)
-               << " | " << fmt(rd_in) << " | " << fmt(r_in) << " | " << fmt(mc.R) << " +- " << fmt(mc.R_stderr, 2)
-               << " | " << fmt(lost, 3) << " |\n";
+            const McResult walk = trace_photons(setup);
+            setup.top_multiple_scattering = false;
+            const McResult single = trace_photons(setup);
+            const double lost = 1.0 - single.specular - single.R - single.T - single.T_direct - single.absorbed;
+            const std::string rd_walk = m > 0.0 ? fmt(walk_internal_reflectance(m, s.eta, uint64_t(photons) * 2)) : "-";
+            md << "| " << (m > 0.0 ? fmt(m) : std::string("smooth")) << " | " << rd_walk << " | " << fmt(rd_rec) << " | " << fmt(r_rec)
+               << " | " << fmt(rd_in) << " | " << fmt(r_in) << " | " << fmt(walk.R) << " +- " << fmt(walk.R_stderr, 2)
+               << " | " << fmt(single.R) << " +- " << fmt(single.R_stderr, 2) << " | " << fmt(lost, 3) << " |\n";
         }
     }
 

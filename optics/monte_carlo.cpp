@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "optics/photon_rng.h"
+#include "optics/microsurface_walk.h"
 #include "optics/rough_surface.h"
 
 namespace st::optics {
@@ -136,7 +137,7 @@ public:
         double w = 1.0 - specular();
         if (s_.top_roughness > 0.0) {
             w = 1.0;
-            if (!rough_interface(s_.top_roughness, s_.n_above, s_.layers[0].n, ux, uy, uz, w, rng)) {
+            if (!rough_top(s_.n_above, s_.layers[0].n, ux, uy, uz, w, rng)) {
                 t.specular += w;  // reflected by the surface (or lost in it, w = 0)
                 return;
             }
@@ -186,6 +187,15 @@ public:
     }
 
 private:
+    // The rough top surface, either way (McSetup::top_multiple_scattering):
+    // true when the photon crossed it; w = 0 when it was lost.
+    bool rough_top(double n1, double n2, double& ux, double& uy, double& uz, double& w, PhotonRng& rng) const {
+        if (!s_.top_multiple_scattering) return rough_interface(s_.top_roughness, n1, n2, ux, uy, uz, w, rng);
+        const InterfaceOutcome o = microsurface_walk(s_.top_roughness, n1, n2, ux, uy, uz, rng);
+        if (o == InterfaceOutcome::Lost) w = 0.0;
+        return o == InterfaceOutcome::Transmitted;
+    }
+
     void cross(PhotonRng& rng, Tally& t, double x, double y, double& ux, double& uy, double& uz, double w,
                size_t& layer, bool scattered, bool& alive, double& w_out) const {
         const bool up = uz < 0.0;
@@ -194,7 +204,7 @@ private:
         const double n2 = leaves ? (up ? s_.n_above : s_.n_below) : s_.layers[up ? layer - 1 : layer + 1].n;
         if (up && leaves && s_.top_roughness > 0.0) {
             double wr = w;
-            if (rough_interface(s_.top_roughness, n1, n2, ux, uy, uz, wr, rng)) {
+            if (rough_top(n1, n2, ux, uy, uz, wr, rng)) {
                 const double radius = std::sqrt(x * x + y * y);
                 const int bin = int(radius / s_.bin_width);
                 t.R += wr;

@@ -28,6 +28,11 @@ struct McSetup {
     // RMS slope of a rough top surface (Beckmann facets, as optics/
     // rough_surface.h); 0 = smooth. The other interfaces are smooth.
     double top_roughness = 0;
+    // How the rough top scatters: by a walk on the microsurface that carries
+    // on the light its facets shadow (optics/microsurface_walk.h, energy
+    // conserving), or, when false, by the single bounce of Eq. 23's
+    // Torrance-Sparrow surface, which loses that light.
+    bool top_multiple_scattering = true;
     uint64_t photons = 100000;
     uint64_t seed = 1;
     int threads = 2;

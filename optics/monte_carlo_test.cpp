@@ -57,13 +57,15 @@ TEST(MonteCarlo, MatchesExactIsotropicSlab) {
     EXPECT_NEAR(r.T, ex.transmittance, 4.0 * r.T_stderr + 2e-5);
 }
 
-// A rough top surface: the light the facets reflect at normal incidence is
-// 1 - rho_dt(1) of the BRDF's quadrature (rough_surface.cpp), computed
-// independently; a nearly smooth surface behaves as the smooth one.
+// A rough top surface with single bounces: the light the facets reflect at
+// normal incidence is 1 - rho_dt(1) of the BRDF's quadrature
+// (rough_surface.cpp), computed independently; a nearly smooth surface
+// behaves as the smooth one.
 TEST(MonteCarlo, RoughTopSurface) {
     for (double m : {0.1, 0.5, 1.0}) {
         McSetup s = slab(1.0, 9.0, 0.0, 1.5, INFINITY, 200000);
         s.top_roughness = m;
+        s.top_multiple_scattering = false;
         const McResult r = trace_photons(s);
         EXPECT_NEAR(r.specular, 1.0 - RoughSurface(m, 1.5).rho_dt(1.0), 0.0015) << m;
         EXPECT_LE(r.R + r.specular + r.absorbed, 1.0 + 1e-4) << m;  // facets may lose light, never make it
@@ -74,6 +76,20 @@ TEST(MonteCarlo, RoughTopSurface) {
     const McResult b = trace_photons(slab(1.0, 9.0, 0.0, 1.5, INFINITY, 200000));
     EXPECT_NEAR(a.R, b.R, 4.0 * b.R_stderr);
     EXPECT_NEAR(a.specular, b.specular, 0.001);
+}
+
+// With the walk on the microsurface (the default) the rough top loses
+// nothing, where single bounces lose a share that grows with roughness.
+TEST(MonteCarlo, RoughTopConservesEnergy) {
+    for (double m : {0.5, 1.0}) {
+        McSetup s = slab(1.0, 9.0, 0.0, 1.5, 0.5, 50000);
+        s.top_roughness = m;
+        const McResult walk = trace_photons(s);
+        EXPECT_NEAR(walk.specular + walk.R + walk.T + walk.T_direct + walk.absorbed, 1.0, 1e-4) << m;
+        s.top_multiple_scattering = false;
+        const McResult single = trace_photons(s);
+        EXPECT_LT(single.specular + single.R + single.T + single.T_direct + single.absorbed, 0.99) << m;
+    }
 }
 
 TEST(MonteCarlo, DeterministicWhateverTheThreads) {
