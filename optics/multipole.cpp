@@ -66,13 +66,13 @@ SourcePair Multipole::pair(int i) const {
 // an error of the order of the profile's second derivative in i. Without it
 // a nearly non-absorbing slab's profiles converge like 1/n^2 (each pair is a
 // dipole whose field falls as 1/z^3) and need 10^5 pairs and more.
-double Multipole::series_tail(double c, double r) const {
+double Multipole::series_tail(double c, double r, int n) const {
     if (!whole_series_ || slab_.semi_infinite()) return 0.0;
     auto Q = [&](double z) {
         const double rho = std::sqrt(r * r + z * z);
         return -std::exp(-sigma_tr_ * rho) / (4.0 * kPi * rho);
     };
-    const double edge = (pairs_per_side() + 0.5) * period_;
+    const double edge = (n + 0.5) * period_;
     return (Q(c - edge) - Q(c + edge)) / period_;
 }
 
@@ -84,7 +84,7 @@ double Multipole::reflectance(double r) const {
     for (const SourcePair& s : sources_)
         sum += point_profile(s.z_real, r, sigma_tr_) - point_profile(s.z_virtual, r, sigma_tr_);
     const SourcePair c = pair(0);
-    sum += series_tail(c.z_real, r) - series_tail(c.z_virtual, r);
+    sum += series_tail(c.z_real, r, pairs_per_side()) - series_tail(c.z_virtual, r, pairs_per_side());
     return std::max(0.0, alpha_ * sum);
 }
 
@@ -95,7 +95,8 @@ double Multipole::transmittance(double r) const {
     for (const SourcePair& s : sources_)
         sum += point_profile(d - s.z_real, r, sigma_tr_) - point_profile(d - s.z_virtual, r, sigma_tr_);
     const SourcePair c = pair(0);
-    sum += series_tail(d - c.z_real, r) - series_tail(d - c.z_virtual, r);  // d - (i P + c): the lattice (-i) P + d - c
+    // d - (i P + c) runs over the lattice (-i) P + (d - c).
+    sum += series_tail(d - c.z_real, r, pairs_per_side()) - series_tail(d - c.z_virtual, r, pairs_per_side());
     return std::max(0.0, alpha_ * sum);
 }
 
@@ -170,11 +171,10 @@ Multipole Multipole::converged(const Slab& slab, double tolerance, SourceDepth s
     // The running sums plus the tail beyond pair n, as the profiles add it.
     auto with_tail = [&](const std::array<double, kMeasures>& sum, int n) {
         std::array<double, kMeasures> v = sum;
-        m.sources_.assign(size_t(2 * n + 1), SourcePair{});  // pairs_per_side() = n
         const SourcePair c = m.pair(0);
         for (size_t k = 0; k < radii.size(); ++k) {
-            v[k] += m.series_tail(c.z_real, radii[k]) - m.series_tail(c.z_virtual, radii[k]);
-            v[k + 3] += m.series_tail(d - c.z_real, radii[k]) - m.series_tail(d - c.z_virtual, radii[k]);
+            v[k] += m.series_tail(c.z_real, radii[k], n) - m.series_tail(c.z_virtual, radii[k], n);
+            v[k + 3] += m.series_tail(d - c.z_real, radii[k], n) - m.series_tail(d - c.z_virtual, radii[k], n);
         }
         return v;
     };

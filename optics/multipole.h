@@ -62,9 +62,9 @@ public:
 
 private:
     SourcePair pair(int i) const;  // the i-th pair of Eq. 16 (0: the central dipole)
-    // Profile at r of the sources at i P + c beyond the pairs summed (|i| > n),
-    // for the whole series (converged()); 0 for a truncated one.
-    double series_tail(double c, double r) const;
+    // Profile at r of the sources at i P + c beyond n pairs (|i| > n), for
+    // the whole series (converged()); 0 for a truncated one.
+    double series_tail(double c, double r, int n) const;
 
     Slab slab_;
     SourceDepth source_;
