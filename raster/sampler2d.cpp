@@ -10,7 +10,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include <cstring>
+
 #include <xmmintrin.h>
+#ifdef __SSSE3__
+#include <tmmintrin.h>
+#endif
 
 namespace st {
 
@@ -94,8 +99,9 @@ inline __attribute__((always_inline)) LinearTaps8 linear_taps_fixed(float s, int
 
 // 8-bit lerp with an 8-bit weight, as pmulhrsw computes it in
 // lp_build_lerp_simple: ((w * (d << 7)) >> 14 + 1) >> 1, kept to 8 bits and
-// added to v0 modulo 256.
-int lerp8(int w, int v0, int v1) {
+// added to v0 modulo 256. The scalar form of the SSSE3 path below, and the
+// fallback without SSSE3.
+[[maybe_unused]] int lerp8(int w, int v0, int v1) {
     const int product = w * ((v1 - v0) * 128);
     const int rounded = ((product >> 14) + 1) >> 1;
     return (v0 + (rounded & 0xff)) & 0xff;
@@ -160,10 +166,31 @@ glm::vec4 Sampler2D::sample_linear_unorm8(const glm::vec2& st) const {
     const uint8_t *t00 = texel(u.i0, v.i0), *t10 = texel(u.i1, v.i0);
     const uint8_t *t01 = texel(u.i0, v.i1), *t11 = texel(u.i1, v.i1);
     glm::vec4 out;
+#ifdef __SSSE3__
+    // The four channels of both rows at once, in 16-bit lanes as llvmpipe
+    // holds them, with pmulhrsw itself: the same integers as lerp8.
+    auto load = [](const uint8_t* p) {
+        int32_t word;
+        std::memcpy(&word, p, 4);
+        return _mm_cvtsi32_si128(word);
+    };
+    const __m128i zero = _mm_setzero_si128(), low8 = _mm_set1_epi16(0xff);
+    const __m128i a = _mm_unpacklo_epi8(_mm_unpacklo_epi32(load(t00), load(t01)), zero);  // t00 | t01
+    const __m128i b = _mm_unpacklo_epi8(_mm_unpacklo_epi32(load(t10), load(t11)), zero);  // t10 | t11
+    auto lerp = [&](__m128i w, __m128i v0, __m128i v1) {
+        const __m128i rounded = _mm_mulhrs_epi16(w, _mm_slli_epi16(_mm_sub_epi16(v1, v0), 7));
+        return _mm_and_si128(_mm_add_epi16(v0, _mm_and_si128(rounded, low8)), low8);
+    };
+    const __m128i rows = lerp(_mm_set1_epi16(int16_t(u.weight)), a, b);  // lerp(t00, t10) | lerp(t01, t11)
+    const __m128i value = lerp(_mm_set1_epi16(int16_t(v.weight)), rows, _mm_unpackhi_epi64(rows, rows));
+    const __m128 f = _mm_mul_ps(_mm_cvtepi32_ps(_mm_unpacklo_epi16(value, zero)), _mm_set1_ps(1.0f / 255.0f));
+    _mm_storeu_ps(&out[0], f);
+#else
     for (int c = 0; c < 4; ++c) {
         const int value = lerp8(v.weight, lerp8(u.weight, t00[c], t10[c]), lerp8(u.weight, t01[c], t11[c]));
         out[c] = float(value) * (1.0f / 255.0f);
     }
+#endif
     return out;
 }
 
