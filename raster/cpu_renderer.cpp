@@ -193,8 +193,13 @@ void CpuRenderer::Impl::shade_tile(int tile, int worker, std::vector<PreparedDra
         rasterize_in_tile(tri, rect, s.quads);
         const auto t1 = Clock::now();
 
-        s.inputs.resize(s.quads.size());
-        s.outputs.resize(s.quads.size());
+        // Grow only: resize() to a larger size value-initialises what a
+        // smaller triangle left, a memset of 600 bytes a quad, and
+        // interpolate_quad writes everything a twin reads.
+        if (s.inputs.size() < s.quads.size()) {
+            s.inputs.resize(s.quads.size());
+            s.outputs.resize(s.quads.size());
+        }
         const Plane* tri_planes = &planes[tri.first_plane];
         for (size_t q = 0; q < s.quads.size(); ++q) {
             interpolate_quad(tri_planes, d.varying_count, s.quads[q], tri.front_facing, s.inputs[q]);
