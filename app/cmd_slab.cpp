@@ -44,7 +44,7 @@ void check_shared_options(const SlabOptions& o) {
 std::vector<optics::LayerSpec> read_layers(const SlabOptions& o) {
     const SlabOptions defaults;
     if (o.sigma_a != defaults.sigma_a || o.sigma_s != defaults.sigma_s || !o.thickness.empty() || o.g != defaults.g ||
-        o.eta != defaults.eta || o.eta_below != o.eta || o.roughness != defaults.roughness || o.pairs != defaults.pairs ||
+        o.eta != defaults.eta || o.eta_below_given || o.roughness != defaults.roughness || o.pairs != defaults.pairs ||
         o.source != defaults.source)
         throw InputError("--layers replaces --sigma-a, --sigma-s, --g, --eta, --eta-below, --thickness, --roughness, "
                          "--pairs and --source: give a layer's values in the file");

@@ -30,6 +30,7 @@ int cmd_sweep(const std::string& technique, const std::string& out_dir, const Co
 struct SlabOptions {
     std::string model = "multipole";  // multipole | dipole | mc
     double sigma_a = -1, sigma_s = -1, g = 0, eta = 1.0, eta_below = -1;
+    bool eta_below_given = false;  // else --eta-below takes --eta's value
     std::string thickness;  // mm or "inf"
     int pairs = -1;         // -1: from the tolerance
     double tolerance = 1e-6;

@@ -143,8 +143,9 @@ int main(int argc, char** argv) {
         if (*golden) return st::cmd_golden(action, scenes, common);
         if (*report) return st::cmd_report(out_dir, report_frames, common);
         if (*slab || *profile) {
-            if (std::none_of(eta_below_given.begin(), eta_below_given.end(), [](CLI::Option* o) { return o->count() > 0; }))
-                slab_options.eta_below = slab_options.eta;
+            slab_options.eta_below_given =
+                std::any_of(eta_below_given.begin(), eta_below_given.end(), [](CLI::Option* o) { return o->count() > 0; });
+            if (!slab_options.eta_below_given) slab_options.eta_below = slab_options.eta;
             if (*slab) return st::cmd_slab(slab_options);
             return st::cmd_profile(slab_options, profile_out, r_max, samples);
         }

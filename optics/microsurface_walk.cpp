@@ -123,9 +123,15 @@ InterfaceOutcome microsurface_walk(double m, double n1, double n2, double& ux, d
         }  // a horizontal ray meets the surface at its own height
         u = std::clamp(u, 0.0, 1.0);
         const Vec wi{-d.x, -d.y, -d.z};
-        const Vec h = visible_normal(wi, m, rng);
-        const double c = dot(wi, h);
-        if (c <= 0.0) continue;  // rounding at grazing: sample again from the same height
+        // A visible facet faces the ray; rounding at grazing can break that
+        // by a hair: sample the facet again, at the same height.
+        Vec h = visible_normal(wi, m, rng);
+        double c = dot(wi, h);
+        for (int retry = 0; c <= 0.0 && retry < 16; ++retry) {
+            h = visible_normal(wi, m, rng);
+            c = dot(wi, h);
+        }
+        if (c <= 0.0) return InterfaceOutcome::Lost;
         const double eta = n_there / n_here;
         if (rng.uniform() <= fresnel_dielectric(c, eta)) {
             d = {d.x + 2.0 * c * h.x, d.y + 2.0 * c * h.y, d.z + 2.0 * c * h.z};

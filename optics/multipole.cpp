@@ -186,7 +186,10 @@ Multipole Multipole::converged(const Slab& slab, double tolerance, SourceDepth s
         add_pair(m.pair(k), sum);
         add_pair(m.pair(-k), sum);
         const std::array<double, kMeasures> next = with_tail(sum, k);
-        bool done = k > 1;  // q needs two changes
+        // q needs two changes, and not the first: with no pairs summed the
+        // tail integral runs through the source's singularity at z = 0 and
+        // can be far off, which would make q look like 0.
+        bool done = k > 2;
         for (size_t j = 0; j < kMeasures; ++j) {
             const double delta = std::abs(next[j] - cur[j]);
             const double q = prev_delta[j] > 0.0 ? delta / prev_delta[j] : 0.0;
