@@ -1,8 +1,10 @@
 // layered.h: layers combined in frequency space (Donner and Jensen 2005,
-// Sec. 2.3, Eq. 17-22): each layer's multipole profiles R(r), T(r), seen
-// from above and from below, are laid on a zero-padded Cartesian grid,
-// Fourier transformed (KissFFT, 2D real), combined per frequency with
-// Kubelka-Munk's formulas, and transformed back to radial profiles.
+// Sec. 2.3, Eq. 17-22): each layer's multipole profiles R(r), T(r), for the
+// incident beam and for diffuse light from above and from below, are laid
+// on a zero-padded Cartesian grid (optics/fft_grid.h), Fourier transformed,
+// combined per frequency with Kubelka-Munk's formulas (two fluxes: the
+// collimated beam and diffuse light; layered.cpp), and transformed back to
+// radial profiles.
 #pragma once
 
 #include <array>

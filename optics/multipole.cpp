@@ -29,12 +29,39 @@ double point_total(double z, double sigma_tr) {
 
 }  // namespace
 
+double diffuse_unscattered(double tau) {
+    constexpr int kSteps = 512;
+    double sum = 0.0;
+    for (int i = 0; i < kSteps; ++i) {
+        const double mu = (i + 0.5) / kSteps;
+        sum += 2.0 * mu * std::exp(-tau / mu) / kSteps;
+    }
+    return sum;
+}
+
 Multipole::Multipole(const Slab& slab, int n, SourceDepth source) : slab_(slab), source_(source) {
     alpha_ = slab.albedo_reduced();
     sigma_tr_ = slab.sigma_tr();
     const double D = slab.diffusion_constant();
     double l = slab.mean_free_path();
-    if (source == SourceDepth::FirstScatter && !slab.semi_infinite()) {
+    if (source == SourceDepth::DiffuseFirstScatter) {
+        // Over cosine-weighted directions mu: first scattering at depth z
+        // with density (1/(l mu)) e^(-z/(l mu)), 2 mu dmu.
+        if (slab.semi_infinite()) {
+            l = l * 2.0 / 3.0;
+        } else {
+            const double tau = slab.thickness / l;
+            constexpr int kSteps = 512;
+            double depth = 0.0;
+            for (int i = 0; i < kSteps; ++i) {
+                const double mu = (i + 0.5) / kSteps, x = tau / mu;
+                depth += 2.0 * mu * mu * l * (-std::expm1(-x) - x * std::exp(-x)) / kSteps;
+            }
+            const double scatters = 1.0 - diffuse_unscattered(tau);
+            l = depth / scatters;
+            alpha_ *= scatters;
+        }
+    } else if (source == SourceDepth::FirstScatter && !slab.semi_infinite()) {
         const double x = slab.thickness / l;
         const double scatters = -std::expm1(-x);  // 1 - e^(-d/l)
         // l - d e^(-x) / (1 - e^(-x)), written to stay accurate for small x.

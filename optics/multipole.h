@@ -27,7 +27,14 @@ enum class SourceDepth {
     // there at all, 1 - e^(-d/l): the same as MeanFreePath for thick slabs,
     // defined for any thickness, and T excludes the unscattered beam.
     FirstScatter,
+    // The same for diffuse (cosine-distributed) incidence: the mean depth of
+    // first scattering over all directions, weighted by 1 - 2 E3(d / l).
+    DiffuseFirstScatter,
 };
+
+// 2 E3(tau): the share of diffuse light that crosses a slab of optical
+// thickness tau unscattered (by quadrature over the cosine).
+double diffuse_unscattered(double tau);
 
 struct SourcePair {
     double z_real, z_virtual;  // signed depths, mm
