@@ -17,6 +17,7 @@
 #include "raster/stage_times.h"
 #include "scene/input_error.h"
 #include "app/layer_file.h"
+#include "app/profile_table.h"
 
 #include <fstream>
 
@@ -33,7 +34,6 @@ double fresnel_normal(double eta) {
 // The options a single slab and a stack share.
 void check_shared_options(const SlabOptions& o) {
     if (!(o.tolerance > 0.0 && o.tolerance < 1.0)) throw InputError("--tolerance must lie in (0, 1)");
-    if (o.pairs < -1 || o.pairs > 1000000) throw InputError("--pairs must lie in [0, 1000000]");
     // About 1 us per photon per core on this machine for albedos near 0.9;
     // 2e8 photons is several minutes, past that a run is a mistake.
     if (o.photons < 1 || o.photons > 200000000) throw InputError("--photons must lie in [1, 200000000]");
@@ -251,12 +251,12 @@ int cmd_slab(const SlabOptions& o) {
 }
 
 int cmd_profile(const SlabOptions& o, const std::string& out, double r_max, int samples) {
+    if (out.empty()) throw InputError("profile needs --out FILE (.csv or .exr)");
+    check_profile_path(out);
+    ProfileTable table;
     if (o.model == "mc") {
-        if (out.empty()) throw InputError("profile needs --out FILE (.csv or .exr)");
         if (!(r_max > 0.0) || !std::isfinite(r_max)) throw InputError("--r-max must be a number > 0 (mm)");
         if (samples < 2 || samples > 1000000) throw InputError("--samples must lie in [2, 1000000]");
-        if (out.size() > 4 && out.compare(out.size() - 4, 4, ".exr") == 0)
-            throw InputError("profile --model mc writes CSV only, so far");
         std::vector<optics::LayerSpec> layers;
         if (!o.layers_file.empty()) {
             layers = read_layers(o);
@@ -266,80 +266,49 @@ int cmd_profile(const SlabOptions& o, const std::string& out, double r_max, int 
             layers = {grey_layer(s, o.roughness)};
         }
         const int channels = o.layers_file.empty() ? 1 : 3;
-        std::vector<optics::McResult> results;
         for (int c = 0; c < channels; ++c) {
             optics::McSetup setup = mc_setup(layers, c, o);
             setup.bin_width = r_max / samples;
             setup.bins = samples;
-            results.push_back(optics::trace_photons(setup));
+            const optics::McResult r = optics::trace_photons(setup);
+            table.radii = r.bin_centres;  // the bins' area-weighted centres
+            table.R.push_back(r.R_profile);
+            table.T.push_back(r.T_profile);
         }
-        std::ostringstream csv;
-        csv << std::setprecision(9) << (channels == 1 ? "r_mm,R,T\n" : "r_mm,R_r,R_g,R_b,T_r,T_g,T_b\n");
-        for (int i = 0; i < samples; ++i) {
-            csv << results[0].bin_centres[size_t(i)];
-            for (const auto& r : results) csv << ',' << r.R_profile[size_t(i)];
-            for (const auto& r : results) csv << ',' << r.T_profile[size_t(i)];
-            csv << '\n';
-        }
-        write_text_file(out, csv.str());
+        table.metadata = {{"model", "mc"}, {"photons", std::to_string(o.photons)}, {"seed", std::to_string(o.seed)}};
+        write_profile_table(out, table);
         std::cerr << "profile: Monte Carlo, " << o.photons << " photons per channel, bins of " << r_max / samples
                   << " mm\n";
         return 0;
     }
     if (!o.layers_file.empty()) {
-        if (out.empty()) throw InputError("profile needs --out FILE (.csv or .exr)");
         const auto layers = read_layers(o);
         const optics::LayeredResult r = optics::combine_layers(layers, layered_options(o));
-        std::ostringstream csv;
-        csv << std::setprecision(9) << "r_mm,R_r,R_g,R_b,T_r,T_g,T_b\n";
-        const bool exr = out.size() > 4 && out.compare(out.size() - 4, 4, ".exr") == 0;
-        Image rows(int(r.radii.size()), 2);  // row 0: R(r) rgb, row 1: T(r) rgb; alpha = r
-        for (size_t i = 0; i < r.radii.size(); ++i) {
-            csv << r.radii[i];
-            for (const auto& c : r.channel) csv << ',' << c.R_profile[i];
-            for (const auto& c : r.channel) csv << ',' << c.T_profile[i];
-            csv << '\n';
-            for (int c = 0; c < 3; ++c) {
-                rows.pixel(int(i), 0)[c] = float(r.channel[size_t(c)].R_profile[i]);
-                rows.pixel(int(i), 1)[c] = float(r.channel[size_t(c)].T_profile[i]);
-            }
-            rows.pixel(int(i), 0)[3] = rows.pixel(int(i), 1)[3] = float(r.radii[i]);
+        table.radii = r.radii;
+        for (const auto& c : r.channel) {
+            table.R.push_back(c.R_profile);
+            table.T.push_back(c.T_profile);
         }
-        if (exr)
-            write_exr(out, rows, {{"model", "multipole, layered"}, {"rows", "0: R(r) rgb, 1: T(r) rgb; alpha = r in mm"}});
-        else
-            write_text_file(out, csv.str());
+        table.metadata = {{"model", o.no_km ? "multipole, layered, no KM" : "multipole, layered"},
+                          {"grid", std::to_string(o.grid)}};
+        write_profile_table(out, table);
         std::cerr << "profile: " << r.radii.size() << " radii, cell " << r.cell << " mm\n";
         return 0;
     }
     const optics::Slab s = validated(o);
-    if (out.empty()) throw InputError("profile needs --out FILE (.csv or .exr)");
     if (!(r_max > 0.0) || !std::isfinite(r_max)) throw InputError("--r-max must be a number > 0 (mm)");
     if (samples < 2 || samples > 1000000) throw InputError("--samples must lie in [2, 1000000]");
     const optics::Multipole m = build(s, o);
-    const bool exr = out.size() > 4 && out.compare(out.size() - 4, 4, ".exr") == 0;
-    if (exr) {
-        // One row, one pixel per radius: channels R(r), T(r), r, 1.
-        Image image(samples, 1);
-        for (int i = 0; i < samples; ++i) {
-            const double r = r_max * i / (samples - 1);
-            float* p = image.pixel(i, 0);
-            p[0] = float(m.reflectance(r));
-            p[1] = float(m.transmittance(r));
-            p[2] = float(r);
-            p[3] = 1.0f;
-        }
-        write_exr(out, image, {{"model", o.model}, {"dipole_pairs", std::to_string(m.dipoles())},
-                               {"channels", "R(r) per mm^2, T(r) per mm^2, r in mm"}});
-    } else {
-        std::ostringstream csv;
-        csv << std::setprecision(9) << "r_mm,R,T\n";
-        for (int i = 0; i < samples; ++i) {
-            const double r = r_max * i / (samples - 1);
-            csv << r << ',' << m.reflectance(r) << ',' << m.transmittance(r) << '\n';
-        }
-        write_text_file(out, csv.str());
+    table.R.resize(1);
+    table.T.resize(1);
+    for (int i = 0; i < samples; ++i) {
+        const double r = r_max * i / (samples - 1);
+        table.radii.push_back(r);
+        table.R[0].push_back(m.reflectance(r));
+        table.T[0].push_back(m.transmittance(r));
     }
+    table.metadata = {{"model", o.model}, {"dipole_pairs", std::to_string(m.dipoles())}};
+    write_profile_table(out, table);
     std::cerr << "profile: " << samples << " radii to " << r_max << " mm, " << m.dipoles() << " dipoles\n";
     return 0;
 }

@@ -84,7 +84,8 @@ int main(int argc, char** argv) {
         cmd->add_option("--source", slab_options.source,
                         "diffusion source depth: first-scatter (defined for any thickness) or paper (1/sigma_t')")
             ->check(CLI::IsMember({"first-scatter", "paper"}));
-        auto* pairs = cmd->add_option("--pairs", slab_options.pairs, "dipole pairs per side (multipole)");
+        auto* pairs = cmd->add_option("--pairs", slab_options.pairs, "dipole pairs per side (multipole)")
+                          ->check(CLI::Range(0, 1000000));  // -1, "from the tolerance", is not a value to give
         cmd->add_option("--tolerance", slab_options.tolerance, "relative tolerance that sets the pairs")->excludes(pairs);
     };
     auto* slab = app.add_subcommand("slab", "total diffuse R and T of a slab (dipole, multipole or Monte Carlo)");

@@ -161,6 +161,7 @@ case "$case_name" in
     expect_slab_error "zero photons" --model mc --sigma-a 1 --sigma-s 1 --thickness 1 --photons 0
     expect_slab_error "absurd photons" --model mc --sigma-a 1 --sigma-s 1 --thickness 1 --photons 100000000000
     expect_slab_error "pairs and tolerance" --sigma-a 1 --sigma-s 1 --thickness 1 --pairs 3 --tolerance 1e-3
+    expect_slab_error "negative pairs" --sigma-a 1 --sigma-s 1 --thickness 1 --pairs -1
     # Layers: per-channel lists, and bad layer files.
     printf '[{"sigma_a":[0.05,0.1,0.2],"sigma_s":[1,1,1],"g":0,"eta":1.4,"thickness":0.5},{"sigma_a":[0.01,0.02,0.04],"sigma_s":[2,2,2],"g":0,"eta":1.0,"thickness":"inf"}]' >"$work/layers.json"
     layered=$("$bin" slab --layers "$work/layers.json" --json)
@@ -199,6 +200,14 @@ case "$case_name" in
     head -1 "$work/p.csv" | grep -q "^r_mm,R,T$" || fail "profile: CSV header"
     "$bin" profile --sigma-a 0.01 --sigma-s 1 --thickness 2 --out "$work/p.exr" 2>/dev/null
     [ -s "$work/p.exr" ] || fail "profile: no EXR"
+    # One EXR layout for every model: row 0 R(r), row 1 T(r), alpha = r.
+    "$bin" profile --layers "$work/layers.json" --out "$work/pl.exr" 2>/dev/null
+    "$bin" profile --sigma-a 0.01 --sigma-s 1 --thickness 2 --model mc --photons 2000 --samples 16 --out "$work/pm.exr" 2>/dev/null
+    for f in p pl pm; do
+      iinfo "$work/$f.exr" | grep -q " x    2, 4 channel" || fail "profile $f.exr: not two rows of RGBA"
+    done
+    set +e; "$bin" profile --sigma-a 0.01 --sigma-s 1 --thickness 2 --out "$work/p.png" 2>"$work/err"; rc=$?; set -e
+    [ "$rc" -eq 2 ] && [ ! -e "$work/p.png" ] && [ "$(wc -l <"$work/err")" -eq 1 ] || fail "profile to a .png: exit $rc"
     set +e; "$bin" profile --sigma-a 0.01 --sigma-s 1 --thickness 2 --out "$work/nodir/p.csv" 2>/dev/null; rc=$?; set -e
     [ "$rc" -eq 2 ] || fail "profile to a missing folder: exit $rc"
     ;;
