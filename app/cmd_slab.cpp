@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
@@ -29,6 +30,18 @@ namespace {
 double fresnel_normal(double eta) {
     const double r = (eta - 1.0) / (eta + 1.0);
     return r * r;
+}
+
+// No NaN or infinity reaches a result: inputs are bounded so none should
+// arise, and if one does it is a defect to report, not a number to print.
+void require_finite(const nlohmann::json& j, const std::string& key = "result") {
+    if (j.is_object()) {
+        for (const auto& [k, v] : j.items()) require_finite(v, k);
+    } else if (j.is_array()) {
+        for (const auto& v : j) require_finite(v, key);
+    } else if (j.is_number_float() && !std::isfinite(j.get<double>())) {
+        throw std::runtime_error(key + " is not finite for these inputs (a defect: please report the command)");
+    }
 }
 
 // The options a single slab and a stack share.
@@ -98,15 +111,19 @@ optics::LayeredOptions layered_options(const SlabOptions& o) {
 optics::Slab validated(const SlabOptions& o) {
     if (o.sigma_a == -1 && o.sigma_s == -1 && o.thickness.empty())
         throw InputError("give --sigma-a, --sigma-s and --thickness, or --layers FILE");
-    auto finite_nonneg = [](double v, const char* name) {
-        if (!std::isfinite(v) || v < 0.0) throw InputError(std::string(name) + " must be a finite number >= 0");
+    auto coefficient = [](double v, const char* name) {
+        if (!(v >= 0.0 && v <= kCoefficientMax))
+            throw InputError(std::string(name) + " must be a number in [0, 1e9] (per mm)");
     };
-    finite_nonneg(o.sigma_a, "--sigma-a");
-    finite_nonneg(o.sigma_s, "--sigma-s");
+    coefficient(o.sigma_a, "--sigma-a");
+    coefficient(o.sigma_s, "--sigma-s");
     if (!(o.g > -1.0 && o.g < 1.0)) throw InputError("--g must lie in (-1, 1)");
-    if (!(o.eta > 0.0) || !std::isfinite(o.eta)) throw InputError("--eta must be a finite number > 0");
-    if (!(o.eta_below > 0.0) || !std::isfinite(o.eta_below))
-        throw InputError("--eta-below must be a finite number > 0");
+    auto index = [](double v, const char* name) {
+        if (!(v > 0.0)) throw InputError(std::string(name) + " must be a number > 0");
+        if (!(v >= kEtaMin && v <= kEtaMax)) throw InputError(std::string(name) + " must lie in [0.01, 100]");
+    };
+    index(o.eta, "--eta");
+    index(o.eta_below, "--eta-below");
     optics::Slab s;
     s.sigma_a = o.sigma_a;
     s.sigma_s = o.sigma_s;
@@ -120,9 +137,11 @@ optics::Slab validated(const SlabOptions& o) {
         std::istringstream in(o.thickness);
         if (!(in >> d) || !in.eof() || !std::isfinite(d) || d <= 0.0)
             throw InputError("--thickness must be a number > 0 (mm) or 'inf'");
+        if (!(d >= kThicknessMin && d <= kThicknessMax)) throw InputError("--thickness must lie in [1e-12, 1e9] mm or be 'inf'");
         s.thickness = d;
     }
-    if (!(s.sigma_t_reduced() > 0.0)) throw InputError("the medium neither scatters nor absorbs (sigma_t' = 0)");
+    if (!(s.sigma_t_reduced() >= kSigmaTReducedMin))
+        throw InputError("sigma_a + sigma_s (1 - g) must be at least 1e-6 per mm (the medium barely interacts)");
     if (!(o.roughness >= 0.0 && o.roughness <= 10.0)) throw InputError("--roughness must lie in [0, 10]");
     if (o.roughness > 0.0 && o.model != "mc") s.boundary_factor_top = optics::rough_boundary_factor(o.roughness, s.eta);
     check_shared_options(o);
@@ -160,6 +179,7 @@ int slab_monte_carlo(const optics::Slab& s, const SlabOptions& o) {
                         {"T_direct", r.T_direct}, {"R_stderr", r.R_stderr}, {"T_stderr", r.T_stderr},
                         {"specular", r.specular}, {"absorbed", r.absorbed}, {"photons", o.photons},
                         {"seed", o.seed}};
+    require_finite(j);
     if (o.json) {
         std::cout << j.dump() << std::endl;
     } else {
@@ -187,6 +207,7 @@ int cmd_slab(const SlabOptions& o) {
                 j["T_stderr"].push_back(r.T_stderr);
                 j["specular"].push_back(r.specular);
             }
+            require_finite(j);
             if (o.json) {
                 std::cout << j.dump() << std::endl;
             } else {
@@ -205,6 +226,7 @@ int cmd_slab(const SlabOptions& o) {
                 list.push_back(std::string(key) == "R" ? c.R : std::string(key) == "T" ? c.T : c.T_direct);
             j[key] = list;
         }
+        require_finite(j);
         if (o.json) {
             std::cout << j.dump() << std::endl;
         } else {
@@ -241,6 +263,7 @@ int cmd_slab(const SlabOptions& o) {
         j["A"] = s.boundary_factor_top;
         j["rho_dt"] = surface.rho_dt_table(16);  // at cos theta = (i + 0.5) / 16
     }
+    require_finite(j);
     if (o.json) {
         std::cout << j.dump() << std::endl;
     } else {

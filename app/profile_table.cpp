@@ -1,7 +1,9 @@
 // profile_table.cpp: see profile_table.h.
 #include "app/profile_table.h"
 
+#include <cmath>
 #include <iomanip>
+#include <stdexcept>
 #include <sstream>
 
 #include "scene/input_error.h"
@@ -52,6 +54,12 @@ void check_profile_path(const std::string& path) {
 
 void write_profile_table(const std::string& path, const ProfileTable& table) {
     check_profile_path(path);
+    for (const auto* channels : {&table.R, &table.T})
+        for (const auto& c : *channels)
+            for (double v : c)
+                if (!std::isfinite(v))
+                    throw std::runtime_error("a profile value is not finite for these inputs (a defect: please "
+                                             "report the command); " + path + " not written");
     if (ends_with(path, ".exr")) {
         Metadata m = table.metadata;
         m["layout"] = "row 0: R(r) rgb, row 1: T(r) rgb, per mm^2; alpha: r in mm";

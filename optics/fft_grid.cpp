@@ -71,7 +71,7 @@ std::vector<double> FftGrid::radial_profile(const Spectrum& s) const {
         }
     std::vector<double> profile(static_cast<size_t>(bins));
     for (int b = 0; b < bins; ++b)
-        profile[size_t(b)] = std::max(0.0, sum[size_t(b)] / (count[size_t(b)] * cell_ * cell_));
+        profile[size_t(b)] = std::max(sum[size_t(b)] / (count[size_t(b)] * cell_ * cell_), 0.0);  // NaN passes
     return profile;
 }
 

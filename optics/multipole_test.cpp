@@ -199,19 +199,29 @@ TEST(Multipole, AbsorptionFree) {
 }
 
 // An index below 1 (the slab optically thinner than its surroundings) takes
-// Eq. 8's other branch; the result stays a reflectance.
-TEST(Multipole, EtaBelowOne) {
-    for (double eta : {0.6, 0.8, 0.99, 1.0, 1.01}) {
-        Slab s;
-        s.sigma_a = 0.05;
-        s.sigma_s = 1.0;
-        s.eta = eta;
-        s.eta_below = eta;
-        s.thickness = 3.0;
-        const Multipole m = Multipole::converged(s, 1e-6);
-        EXPECT_GT(boundary_factor(eta), 0.0) << eta;
-        EXPECT_GT(m.total_reflectance(), 0.0) << eta;
-        EXPECT_LT(m.total_reflectance() + m.total_transmittance(), 1.0) << eta;
+// Eq. 8's other branch, and far outside 1 the fit gives way to the exact
+// integral (the fit's F_dr passes 1 at eta 3.9 and A turns negative: R was
+// -325 at eta 5). Every index gives a slab's totals within [0, 1], also with
+// a different medium below.
+TEST(Multipole, AnyIndexGivesAReflectance) {
+    for (double eta : {0.01, 0.1, 0.3, 0.5, 0.6, 0.8, 0.99, 1.0, 1.01, 1.4, 2.0, 2.5, 5.0, 10.0, 100.0}) {
+        for (double below : {eta, 1.0, 1.4}) {
+            for (const char* depth : {"2", "inf"}) {
+                Slab s;
+                s.sigma_a = 0.05;
+                s.sigma_s = 1.0;
+                s.eta = eta;
+                s.eta_below = below;
+                s.thickness = depth[0] == 'i' ? std::numeric_limits<double>::infinity() : 2.0;
+                const Multipole m = Multipole::converged(s, 1e-6);
+                const double R = m.total_reflectance(), T = m.total_transmittance();
+                EXPECT_GT(boundary_factor(eta), 0.0) << eta;
+                EXPECT_TRUE(std::isfinite(R) && std::isfinite(T)) << eta << " " << below;
+                EXPECT_GT(R, 0.0) << eta << " " << below;
+                EXPECT_GE(T, 0.0) << eta << " " << below;
+                EXPECT_LT(R + T, 1.0) << eta << " " << below;
+            }
+        }
     }
 }
 

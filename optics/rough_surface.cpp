@@ -12,17 +12,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 }
 
-double fresnel_dielectric(double c, double eta) {
-    c = std::clamp(c, 0.0, 1.0);
-    const double s2 = 1.0 - c * c;
-    const double t2 = 1.0 - s2 / (eta * eta);  // cos^2 of the refracted angle
-    if (t2 <= 0.0) return 1.0;
-    const double ct = std::sqrt(t2);
-    const double rs = (c - eta * ct) / (c + eta * ct);
-    const double rp = (eta * c - ct) / (eta * c + ct);
-    return 0.5 * (rs * rs + rp * rp);
-}
-
 double RoughSurface::brdf(double cos_i, double cos_o, double phi) const {
     if (cos_i <= 0.0 || cos_o <= 0.0) return 0.0;
     const double si = std::sqrt(1.0 - cos_i * cos_i), so = std::sqrt(1.0 - cos_o * cos_o);

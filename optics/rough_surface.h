@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "optics/diffuse_fresnel.h"  // fresnel_dielectric
+
 namespace st::optics {
 
 class RoughSurface {
@@ -37,10 +39,6 @@ public:
 private:
     double m_, eta_;
 };
-
-// Exact unpolarised Fresnel reflectance at incidence cosine c for relative
-// index eta (total internal reflection gives 1).
-double fresnel_dielectric(double c, double eta);
 
 // How rho_d, the diffuse reflection of the boundary seen from inside, is
 // taken from the Torrance-Sparrow surface.

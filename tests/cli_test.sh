@@ -162,6 +162,9 @@ case "$case_name" in
     expect_slab_error "absurd photons" --model mc --sigma-a 1 --sigma-s 1 --thickness 1 --photons 100000000000
     expect_slab_error "pairs and tolerance" --sigma-a 1 --sigma-s 1 --thickness 1 --pairs 3 --tolerance 1e-3
     expect_slab_error "negative pairs" --sigma-a 1 --sigma-s 1 --thickness 1 --pairs -1
+    expect_slab_error "eta beyond 100" --sigma-a 1 --sigma-s 1 --thickness 1 --eta 1000
+    expect_slab_error "overflowing coefficient" --sigma-a 1e154 --sigma-s 1 --thickness 1
+    expect_slab_error "a medium that barely interacts" --sigma-a 1e-300 --sigma-s 1e-300 --thickness inf
     # Layers: per-channel lists, and bad layer files.
     printf '[{"sigma_a":[0.05,0.1,0.2],"sigma_s":[1,1,1],"g":0,"eta":1.4,"thickness":0.5},{"sigma_a":[0.01,0.02,0.04],"sigma_s":[2,2,2],"g":0,"eta":1.0,"thickness":"inf"}]' >"$work/layers.json"
     layered=$("$bin" slab --layers "$work/layers.json" --json)
