@@ -45,7 +45,24 @@ void require_finite(const nlohmann::json& j, const std::string& key = "result") 
 }
 
 // The options a single slab and a stack share.
+// An option that does nothing for the chosen model is refused, not ignored:
+// a user who gives --grid to a single slab believes it did something.
+void refuse(const SlabOptions& o, std::initializer_list<const char*> names, const std::string& why) {
+    for (const char* name : names)
+        if (o.given.count(name)) throw InputError(std::string(name) + " " + why);
+}
+
+void refuse_unused_options(const SlabOptions& o) {
+    if (o.model != "mc") refuse(o, {"--photons", "--seed", "--threads"}, "is for --model mc");
+    if (o.model == "mc")
+        refuse(o, {"--pairs", "--tolerance", "--source", "--no-km", "--grid", "--extent"},
+               "is for the diffusion models, not --model mc");
+    if (o.model == "dipole") refuse(o, {"--pairs", "--tolerance"}, "is for --model multipole (the dipole is one pair)");
+    if (o.layers_file.empty()) refuse(o, {"--no-km", "--grid", "--extent"}, "is for --layers");
+}
+
 void check_shared_options(const SlabOptions& o) {
+    refuse_unused_options(o);
     if (!(o.tolerance > 0.0 && o.tolerance < 1.0)) throw InputError("--tolerance must lie in (0, 1)");
     // About 1 us per photon per core on this machine for albedos near 0.9;
     // 2e8 photons is several minutes, past that a run is a mistake.
@@ -55,12 +72,12 @@ void check_shared_options(const SlabOptions& o) {
 
 // Reads the layers file and checks the options that go with layers.
 std::vector<optics::LayerSpec> read_layers(const SlabOptions& o) {
-    const SlabOptions defaults;
-    if (o.sigma_a != defaults.sigma_a || o.sigma_s != defaults.sigma_s || !o.thickness.empty() || o.g != defaults.g ||
-        o.eta != defaults.eta || o.eta_below_given || o.roughness != defaults.roughness || o.pairs != defaults.pairs ||
-        o.source != defaults.source)
-        throw InputError("--layers replaces --sigma-a, --sigma-s, --g, --eta, --eta-below, --thickness, --roughness, "
-                         "--pairs and --source: give a layer's values in the file");
+    for (const char* name : {"--sigma-a", "--sigma-s", "--g", "--eta", "--eta-below", "--thickness", "--roughness",
+                             "--pairs", "--source"})
+        if (o.given.count(name))
+            throw InputError("--layers replaces --sigma-a, --sigma-s, --g, --eta, --eta-below, --thickness, --roughness, "
+                             "--pairs and --source: give a layer's values in the file");
+    if (o.model == "dipole") throw InputError("--layers takes --model multipole or mc");
     check_shared_options(o);
     const std::vector<optics::LayerSpec> layers = read_layer_file(o.layers_file);
     for (size_t i = 1; i < layers.size(); ++i)
@@ -87,14 +104,22 @@ optics::McSetup mc_setup(const std::vector<optics::LayerSpec>& layers, int chann
         m.thickness = l.thickness;
         setup.layers.push_back(m);
     }
+    // A photon in an absorption-free half-space ends only by coming back
+    // out, and its time to do so has no finite mean: the run need not end.
+    if (std::isinf(setup.layers.back().thickness) && setup.layers.back().sigma_a == 0.0)
+        throw InputError("--model mc: an absorption-free semi-infinite layer keeps photons for ever; give it sigma_a > 0 "
+                         "or a finite thickness");
     setup.n_above = setup.n_below = 1.0;
     setup.top_roughness = layers.front().roughness;
     setup.photons = uint64_t(o.photons);
     setup.seed = uint64_t(o.seed);
     setup.threads = o.threads;
-    const auto start = Clock::now();
-    setup.progress = [start](double done) {
-        if (ms_between(start, Clock::now()) > 2000.0) std::cerr << "mc: " << int(done * 100.0) << " %\n";
+    // Progress once the whole command (all channels; one command per
+    // process) has run 2 s.
+    static const auto start = Clock::now();
+    const std::string what = !o.layers_file.empty() ? "mc, channel " + std::to_string(channel) + ": " : "mc: ";
+    setup.progress = [what](double done) {
+        if (ms_between(start, Clock::now()) > 2000.0) std::cerr << what << int(done * 100.0) << " %\n";
     };
     return setup;
 }
@@ -193,7 +218,6 @@ int slab_monte_carlo(const optics::Slab& s, const SlabOptions& o) {
 
 int cmd_slab(const SlabOptions& o) {
     if (!o.layers_file.empty()) {
-        if (o.model == "dipole") throw InputError("--layers takes --model multipole or mc");
         const auto layers = read_layers(o);
         if (o.model == "mc") {
             nlohmann::json j = {{"model", "mc"}, {"layers", layers.size()}, {"photons", o.photons}, {"seed", o.seed}};
@@ -306,6 +330,7 @@ int cmd_profile(const SlabOptions& o, const std::string& out, double r_max, int 
     }
     if (!o.layers_file.empty()) {
         const auto layers = read_layers(o);
+        refuse(o, {"--r-max", "--samples"}, "does not apply to a layered table: its radii are the grid's (--grid, --extent)");
         const optics::LayeredResult r = optics::combine_layers(layers, layered_options(o));
         table.radii = r.radii;
         for (const auto& c : r.channel) {

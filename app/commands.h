@@ -2,6 +2,7 @@
 // code: 0 success, 1 a check failed, 2 an error (bad input among them).
 #pragma once
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,7 @@ struct SlabOptions {
     long long seed = 1;           // mc
     int threads = 2;              // mc
     bool json = false;
+    std::set<std::string> given;  // the options on the command line ("--grid"): what is not used is refused
 };
 int cmd_slab(const SlabOptions& options);
 int cmd_profile(const SlabOptions& options, const std::string& out, double r_max, int samples);

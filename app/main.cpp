@@ -144,6 +144,9 @@ int main(int argc, char** argv) {
         if (*golden) return st::cmd_golden(action, scenes, common);
         if (*report) return st::cmd_report(out_dir, report_frames, common);
         if (*slab || *profile) {
+            for (const CLI::Option* option : (*slab ? slab : profile)->get_options())
+                if (option->count() > 0)
+                    for (const std::string& name : option->get_lnames()) slab_options.given.insert("--" + name);
             slab_options.eta_below_given =
                 std::any_of(eta_below_given.begin(), eta_below_given.end(), [](CLI::Option* o) { return o->count() > 0; });
             if (!slab_options.eta_below_given) slab_options.eta_below = slab_options.eta;

@@ -9,6 +9,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <mutex>
 #include <thread>
 
 #include "optics/photon_rng.h"
@@ -273,18 +275,52 @@ private:
 McResult trace_photons(const McSetup& setup) {
     const Tracer tracer(setup);
     // Chunks depend on the photon count only: at least 4096 photons, at
-    // most 1024 chunks plus one.
+    // most 1024 chunks plus one. Each chunk has its own random stream and
+    // tally; tallies are added into the sums strictly in chunk order, so the
+    // result does not depend on the thread count, and a finished chunk is
+    // kept only until the chunks before it are in (memory: a few tallies, not
+    // one per chunk, whatever the number of bins).
     const uint64_t chunk = std::max<uint64_t>(4096, setup.photons / 1024);
     const uint64_t chunks = (setup.photons + chunk - 1) / chunk;
-    std::vector<Tally> tallies(static_cast<size_t>(chunks));
+    Tally sum;
+    sum.R_bins.assign(size_t(setup.bins), 0.0);
+    sum.T_bins.assign(size_t(setup.bins), 0.0);
+    double R2 = 0.0, T2 = 0.0;  // per-photon second moments, for the standard errors
+    std::map<uint64_t, std::pair<Tally, std::pair<double, double>>> waiting;
+    uint64_t next_to_add = 0;
+    std::mutex merge;
     std::atomic<uint64_t> next{0}, done{0};
     auto run_chunk = [&](uint64_t c) {
-        Tally& t = tallies[size_t(c)];
+        Tally t;
         t.R_bins.assign(size_t(setup.bins), 0.0);
         t.T_bins.assign(size_t(setup.bins), 0.0);
         PhotonRng rng(setup.seed, c);
         const uint64_t n = std::min(chunk, setup.photons - c * chunk);
-        for (uint64_t p = 0; p < n; ++p) tracer.trace_one(rng, t);
+        double r2 = 0.0, t2 = 0.0;
+        for (uint64_t p = 0; p < n; ++p) {
+            const double r0 = t.R, t0 = t.T;
+            tracer.trace_one(rng, t);
+            r2 += (t.R - r0) * (t.R - r0);
+            t2 += (t.T - t0) * (t.T - t0);
+        }
+        std::lock_guard<std::mutex> lock(merge);
+        waiting.emplace(c, std::make_pair(std::move(t), std::make_pair(r2, t2)));
+        for (auto it = waiting.find(next_to_add); it != waiting.end(); it = waiting.find(next_to_add)) {
+            const Tally& in = it->second.first;
+            sum.R += in.R;
+            sum.T += in.T;
+            sum.T_direct += in.T_direct;
+            sum.absorbed += in.absorbed;
+            sum.specular += in.specular;
+            for (int b = 0; b < setup.bins; ++b) {
+                sum.R_bins[size_t(b)] += in.R_bins[size_t(b)];
+                sum.T_bins[size_t(b)] += in.T_bins[size_t(b)];
+            }
+            R2 += it->second.second.first;
+            T2 += it->second.second.second;
+            waiting.erase(it);
+            ++next_to_add;
+        }
         done.fetch_add(1);
     };
     auto work = [&] {
@@ -305,41 +341,21 @@ McResult trace_photons(const McSetup& setup) {
     for (auto& t : threads) t.join();
 
     McResult r;
-    r.specular = tracer.specular();
-    r.R_profile.assign(size_t(setup.bins), 0.0);
-    r.T_profile.assign(size_t(setup.bins), 0.0);
     const double total = double(setup.photons);
-    std::vector<double> chunk_r, chunk_t;
-    for (uint64_t c = 0; c < chunks; ++c) {
-        const Tally& t = tallies[size_t(c)];
-        const double n = double(std::min(chunk, setup.photons - c * chunk));
-        r.R += t.R;
-        r.T += t.T;
-        r.T_direct += t.T_direct;
-        r.absorbed += t.absorbed;
-        r.specular += t.specular / total;
-        chunk_r.push_back(t.R / n);
-        chunk_t.push_back(t.T / n);
-        for (int b = 0; b < setup.bins; ++b) {
-            r.R_profile[size_t(b)] += t.R_bins[size_t(b)];
-            r.T_profile[size_t(b)] += t.T_bins[size_t(b)];
-        }
-    }
-    r.R /= total;
-    r.T /= total;
-    r.T_direct /= total;
-    r.absorbed /= total;
-    auto stderr_of = [](const std::vector<double>& v) {
-        if (v.size() < 2) return 0.0;
-        double mean = 0.0;
-        for (double x : v) mean += x;
-        mean /= double(v.size());
-        double ss = 0.0;
-        for (double x : v) ss += (x - mean) * (x - mean);
-        return std::sqrt(ss / (double(v.size()) * double(v.size() - 1)));
+    r.specular = tracer.specular() + sum.specular / total;
+    r.R = sum.R / total;
+    r.T = sum.T / total;
+    r.T_direct = sum.T_direct / total;
+    r.absorbed = sum.absorbed / total;
+    // Each photon leaves through the top or the bottom once (all-or-none
+    // Fresnel), so its score is one draw: the standard error of the mean.
+    auto stderr_of = [&](double m2, double mean) {
+        return total > 1.0 ? std::sqrt(std::max(m2 / total - mean * mean, 0.0) / (total - 1.0)) : 0.0;
     };
-    r.R_stderr = stderr_of(chunk_r);
-    r.T_stderr = stderr_of(chunk_t);
+    r.R_stderr = stderr_of(R2, r.R);
+    r.T_stderr = stderr_of(T2, r.T);
+    r.R_profile = std::move(sum.R_bins);
+    r.T_profile = std::move(sum.T_bins);
     const double dr = setup.bin_width;
     for (int b = 0; b < setup.bins; ++b) {
         const double i = b + 0.5;

@@ -46,7 +46,7 @@ struct McResult {
     double specular = 0;               // reflected at the top surface on entry (sampled when rough)
     double R = 0, T = 0, T_direct = 0; // diffuse reflectance, diffuse and unscattered transmittance
     double absorbed = 0;
-    double R_stderr = 0, T_stderr = 0; // standard errors from the spread over chunks
+    double R_stderr = 0, T_stderr = 0; // standard errors of R and T, from each photon's score
     std::vector<double> R_profile, T_profile;  // per mm^2, at bin centres
     std::vector<double> bin_centres;           // mm, MCML's r_b = [(i + 1/2) + 1/(12 (i + 1/2))] dr
 };

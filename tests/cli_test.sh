@@ -162,6 +162,11 @@ case "$case_name" in
     expect_slab_error "absurd photons" --model mc --sigma-a 1 --sigma-s 1 --thickness 1 --photons 100000000000
     expect_slab_error "pairs and tolerance" --sigma-a 1 --sigma-s 1 --thickness 1 --pairs 3 --tolerance 1e-3
     expect_slab_error "negative pairs" --sigma-a 1 --sigma-s 1 --thickness 1 --pairs -1
+    expect_slab_error "--grid without --layers" --sigma-a 1 --sigma-s 1 --thickness 1 --grid 64
+    expect_slab_error "--photons with the multipole" --sigma-a 1 --sigma-s 1 --thickness 1 --photons 1000
+    expect_slab_error "--pairs with the dipole" --model dipole --sigma-a 1 --sigma-s 1 --thickness 1 --pairs 3
+    expect_slab_error "--tolerance with Monte Carlo" --model mc --sigma-a 1 --sigma-s 1 --thickness 1 --tolerance 1e-3
+    expect_slab_error "lossless half-space in Monte Carlo" --model mc --sigma-a 0 --sigma-s 1 --thickness inf
     expect_slab_error "eta beyond 100" --sigma-a 1 --sigma-s 1 --thickness 1 --eta 1000
     expect_slab_error "overflowing coefficient" --sigma-a 1e154 --sigma-s 1 --thickness 1
     expect_slab_error "a medium that barely interacts" --sigma-a 1e-300 --sigma-s 1e-300 --thickness inf
