@@ -117,3 +117,29 @@ TEST(MonteCarlo, EnergyIsConserved) {
 }
 
 }  // namespace st::optics
+
+namespace st::optics {
+
+// The reported standard error is what the spread over independent runs
+// shows, whatever the chunking (a run of one chunk once reported 0, and a
+// last chunk of one photon inflated it 18 times).
+TEST(MonteCarlo, StandardErrorMatchesTheSpreadOverSeeds) {
+    const int runs = 24;
+    double sum = 0.0, sum2 = 0.0, reported = 0.0;
+    for (int k = 0; k < runs; ++k) {
+        McSetup s = slab(1.0, 9.0, 0.75, 1.4, 0.2, 4097);  // one full chunk and a single photon
+        s.seed = uint64_t(100 + k);
+        const McResult r = trace_photons(s);
+        sum += r.R;
+        sum2 += r.R * r.R;
+        reported += r.R_stderr / runs;
+    }
+    const double mean = sum / runs;
+    const double spread = std::sqrt((sum2 / runs - mean * mean) * runs / (runs - 1));
+    // With 24 runs the spread itself is known to about 15 %.
+    EXPECT_NEAR(reported / spread, 1.0, 0.4) << reported << " " << spread;
+    McSetup one = slab(1.0, 9.0, 0.75, 1.4, 0.2, 1000);
+    EXPECT_GT(trace_photons(one).R_stderr, 0.0);
+}
+
+}  // namespace st::optics
