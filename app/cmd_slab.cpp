@@ -244,10 +244,13 @@ int cmd_slab(const SlabOptions& o) {
         const optics::LayeredResult r = optics::combine_layers(layers, layered_options(o));
         nlohmann::json j = {{"model", "multipole"}, {"layers", layers.size()}, {"km", !o.no_km},
                             {"grid", o.grid}, {"cell_mm", r.cell}, {"dipole_pairs", r.dipoles}};
-        for (const char* key : {"R", "T", "T_direct"}) {
+        for (const char* key : {"R", "T", "T_direct", "profile_cut"}) {
             nlohmann::json list = nlohmann::json::array();
             for (const auto& c : r.channel)
-                list.push_back(std::string(key) == "R" ? c.R : std::string(key) == "T" ? c.T : c.T_direct);
+                list.push_back(std::string(key) == "R"   ? c.R
+                               : std::string(key) == "T" ? c.T
+                               : std::string(key) == "T_direct" ? c.T_direct
+                                                                 : c.profile_cut);
             j[key] = list;
         }
         require_finite(j);
@@ -255,7 +258,8 @@ int cmd_slab(const SlabOptions& o) {
             std::cout << j.dump() << std::endl;
         } else {
             std::cout << std::setprecision(6);
-            for (const char* key : {"R", "T", "T_direct"}) std::cout << key << " " << j[key][0] << " " << j[key][1] << " " << j[key][2] << "\n";
+            for (const char* key : {"R", "T", "T_direct", "profile_cut"})
+                std::cout << key << " " << j[key][0] << " " << j[key][1] << " " << j[key][2] << "\n";
             std::cout << "dipole_pairs";
             for (int d : r.dipoles) std::cout << " " << d;
             std::cout << "\n";
@@ -340,7 +344,9 @@ int cmd_profile(const SlabOptions& o, const std::string& out, double r_max, int 
         table.metadata = {{"model", o.no_km ? "multipole, layered, no KM" : "multipole, layered"},
                           {"grid", std::to_string(o.grid)}};
         write_profile_table(out, table);
-        std::cerr << "profile: " << r.radii.size() << " radii, cell " << r.cell << " mm\n";
+        double cut = 0.0;
+        for (const auto& c : r.channel) cut = std::max(cut, c.profile_cut);
+        std::cerr << "profile: " << r.radii.size() << " radii, cell " << r.cell << " mm, profile_cut " << cut << "\n";
         return 0;
     }
     const optics::Slab s = validated(o);

@@ -31,12 +31,15 @@ public:
     // The spectrum of a radial profile (per mm^2) sampled at cell centres,
     // centred on cell (0, 0) and wrapped, zero beyond a quarter of the grid
     // (so one convolution of two kernels cannot wrap around), scaled to sum
-    // to `total` (so sampling a sharp peak cannot change the energy).
-    Spectrum kernel(double total, const std::function<double(double)>& profile) const;
+    // to `total` (so sampling a sharp peak cannot change the energy). If
+    // `cut` is given, it is raised to the share of `total` that lies beyond
+    // the quarter grid.
+    Spectrum kernel(double total, const std::function<double(double)>& profile, double* cut = nullptr) const;
 
-    // Back to space, averaged over annuli one cell wide around cell (0, 0):
-    // per mm^2 at radii b * cell, b < n / 2; negative values (float noise
-    // far out) clamped to 0.
+    // Back to space, per mm^2 at radii b * cell, b < n / 2: the cells
+    // averaged over one-cell-wide annuli, interpolated to radius b between
+    // the annuli's mean radii; negative values (float noise far out)
+    // clamped to 0.
     std::vector<double> radial_profile(const Spectrum& s) const;
 
 private:

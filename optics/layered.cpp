@@ -30,6 +30,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "optics/diffuse_fresnel.h"
@@ -42,6 +43,7 @@ namespace st::optics {
 namespace {
 
 using Complex = std::complex<float>;
+constexpr double kPi = 3.14159265358979323846;
 
 double fresnel_normal(double eta) {
     const double r = (eta - 1.0) / (eta + 1.0);
@@ -70,7 +72,7 @@ struct Responses {
     double ec = 0.0;
 };
 
-Responses layer_responses(const FftGrid& grid, const Slab& s, double tolerance, int& dipoles) {
+Responses layer_responses(const FftGrid& grid, const Slab& s, double tolerance, int& dipoles, double& cut) {
     Slab flipped = s;  // seen from below: the two boundaries swap
     std::swap(flipped.eta, flipped.eta_below);
     std::swap(flipped.boundary_factor_top, flipped.boundary_factor_bottom);
@@ -79,11 +81,11 @@ Responses layer_responses(const FftGrid& grid, const Slab& s, double tolerance, 
     const Multipole from_below = Multipole::converged(flipped, tolerance, SourceDepth::DiffuseFirstScatter);
     dipoles = std::max({dipoles, beam.dipoles(), from_above.dipoles(), from_below.dipoles()});
     auto reflected = [&](const Multipole& m) {
-        return grid.kernel(m.total_reflectance(), [&](double r) { return m.reflectance(r); });
+        return grid.kernel(m.total_reflectance(), [&](double r) { return m.reflectance(r); }, &cut);
     };
     auto transmitted = [&](const Multipole& m) {
         if (s.semi_infinite()) return grid.zero();
-        return grid.kernel(m.total_transmittance(), [&](double r) { return m.transmittance(r); });
+        return grid.kernel(m.total_transmittance(), [&](double r) { return m.transmittance(r); }, &cut);
     };
     Responses l{reflected(beam), transmitted(beam), reflected(from_above), transmitted(from_above),
                 reflected(from_below), transmitted(from_below), 0.0};
@@ -140,35 +142,51 @@ void put_under(Responses& s, const Responses& l, bool kubelka_munk) {
 
 }  // namespace
 
+namespace {
+
+// How far a layer's profiles reach: diffusion in a slab between extrapolated
+// boundaries L apart falls off sideways as e^(-kappa r) with kappa^2 =
+// sigma_tr^2 + (pi / L)^2 (the slab's lowest mode); a half-space as
+// e^(-sigma_tr r).
+double lateral_decay(const Slab& s) {
+    const double sigma_tr = s.sigma_tr();
+    if (s.semi_infinite()) return sigma_tr;
+    const double D = s.diffusion_constant();
+    const double a_top = s.boundary_factor_top > 0.0 ? s.boundary_factor_top : boundary_factor(s.eta);
+    const double a_bottom = s.boundary_factor_bottom > 0.0 ? s.boundary_factor_bottom : boundary_factor(s.eta_below);
+    const double L = s.thickness + 2.0 * a_top * D + 2.0 * a_bottom * D;
+    return std::sqrt(sigma_tr * sigma_tr + (kPi / L) * (kPi / L));
+}
+
+// The default grid width: the kernels reach a quarter of it, which should
+// hold the slowest-falling profile down to e^-8 of its peak's scale, and at
+// least 16 reduced mean free paths of the most translucent layer; at most
+// 1024 of those (an absorption-free half-space never falls off: its cut-off
+// share is reported as profile_cut).
+double default_extent(const std::vector<std::array<Slab, 3>>& slabs) {
+    double mfp = 1e-3, reach = 0.0;
+    for (const auto& layer : slabs)
+        for (const Slab& s : layer) {
+            mfp = std::max(mfp, s.mean_free_path());
+            const double kappa = lateral_decay(s);
+            reach = std::max(reach, kappa > 0.0 ? 8.0 / kappa : std::numeric_limits<double>::infinity());
+        }
+    return 4.0 * std::clamp(reach, 16.0 * mfp, 1024.0 * mfp);
+}
+
+}  // namespace
+
 LayeredResult combine_layers(const std::vector<LayerSpec>& layers, const LayeredOptions& o) {
     if (layers.empty()) throw std::invalid_argument("no layers");
     // Absolute indices: air (1) above the first layer and below the last.
     std::vector<double> index{1.0};
     for (const LayerSpec& l : layers) index.push_back(index.back() * l.eta);
     index.push_back(1.0);
-
-    double extent = o.extent;
-    if (extent <= 0.0) {
-        double mfp = 0.0;
-        for (const LayerSpec& l : layers)
-            for (int c = 0; c < 3; ++c) {
-                const double st = l.sigma_a[size_t(c)] + l.sigma_s[size_t(c)] * (1.0 - l.g);
-                if (st > 0.0) mfp = std::max(mfp, 1.0 / st);
-            }
-        extent = 16.0 * std::max(mfp, 1e-3) * 4.0;  // the kernels reach a quarter of it: 16 mfp
-    }
-    const FftGrid grid(o.grid, extent / o.grid);
-    LayeredResult result;
-    result.cell = grid.cell();
-    result.dipoles.assign(layers.size(), 0);
-
-    for (int c = 0; c < 3; ++c) {
-        Responses stack;
-        double direct = 1.0 - fresnel_normal(index[1]);
-        double unscattered = 1.0;  // the beam through every layer, e^(-sigma_t d) each: sigma_t, not sigma_t'
-        for (size_t i = 0; i < layers.size(); ++i) {
+    std::vector<std::array<Slab, 3>> slabs(layers.size());
+    for (size_t i = 0; i < layers.size(); ++i)
+        for (int c = 0; c < 3; ++c) {
             const LayerSpec& L = layers[i];
-            Slab s;
+            Slab& s = slabs[i][size_t(c)];
             s.sigma_a = L.sigma_a[size_t(c)];
             s.sigma_s = L.sigma_s[size_t(c)];
             s.g = L.g;
@@ -176,7 +194,22 @@ LayeredResult combine_layers(const std::vector<LayerSpec>& layers, const Layered
             s.eta_below = index[i + 1] / index[i + 2];
             s.thickness = L.thickness;
             if (L.roughness > 0.0) s.boundary_factor_top = rough_boundary_factor(L.roughness, s.eta);
-            const Responses l = layer_responses(grid, s, o.tolerance, result.dipoles[i]);
+        }
+
+    const double extent = o.extent > 0.0 ? o.extent : default_extent(slabs);
+    const FftGrid grid(o.grid, extent / o.grid);
+    LayeredResult result;
+    result.cell = grid.cell();
+    result.dipoles.assign(layers.size(), 0);
+
+    for (int c = 0; c < 3; ++c) {
+        ChannelResult& ch = result.channel[size_t(c)];
+        Responses stack;
+        double direct = 1.0 - fresnel_normal(index[1]);
+        double unscattered = 1.0;  // the beam through every layer, e^(-sigma_t d) each: sigma_t, not sigma_t'
+        for (size_t i = 0; i < layers.size(); ++i) {
+            const Slab& s = slabs[i][size_t(c)];
+            const Responses l = layer_responses(grid, s, o.tolerance, result.dipoles[i], ch.profile_cut);
             const double passes = s.semi_infinite() ? 0.0 : std::exp(-s.sigma_t() * s.thickness);
             unscattered *= passes * (1.0 - fresnel_normal(s.eta_below));
             direct *= passes * (1.0 - fresnel_normal(s.eta_below));
@@ -186,7 +219,6 @@ LayeredResult combine_layers(const std::vector<LayerSpec>& layers, const Layered
         // T counts the diffuse light plus what the similarity relation
         // (sigma_t' < sigma_t) kept in the unscattered beam although it
         // scattered forward, so that R + T + T_direct + absorption balance.
-        ChannelResult& ch = result.channel[size_t(c)];
         ch.R = stack.rc[0].real();
         ch.T = stack.tc[0].real() + (stack.ec - unscattered);
         ch.T_direct = direct;

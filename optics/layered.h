@@ -22,7 +22,7 @@ struct LayerSpec {
 
 struct LayeredOptions {
     int grid = 256;          // N x N cells, a power of two
-    double extent = 0;       // mm across the grid; 0 = 16 mean free paths of the thickest-scattering layer
+    double extent = 0;       // mm across the grid; 0: from how far the layers' profiles reach (layered.cpp)
     bool kubelka_munk = true;  // false: the first term of Eq. 20 only (Table 2's no-KM column)
     double tolerance = 1e-6;   // for each layer's multipole
 };
@@ -30,6 +30,11 @@ struct LayeredOptions {
 struct ChannelResult {
     double R = 0, T = 0, T_direct = 0;
     std::vector<double> R_profile, T_profile;  // per mm^2 at `radii`
+    // The largest share of any layer's profile total that lay beyond the
+    // kernels' reach (a quarter of the grid) and was folded back in by the
+    // normalisation: the profiles are too high by about this much near the
+    // source and cut off beyond. Raise --extent (and --grid) if it matters.
+    double profile_cut = 0;
 };
 
 struct LayeredResult {
