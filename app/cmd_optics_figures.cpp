@@ -59,10 +59,15 @@ void keep(double value) {
 
 // Indices of the points no other point beats on both (smaller is better).
 std::vector<bool> pareto(const std::vector<double>& cost, const std::vector<double>& error) {
+    // Timings within 5 % count as equal (the machine is noisy): j beats i if
+    // it is no less accurate, not slower by more than that, and better on
+    // one axis by a clear margin.
+    constexpr double kSame = 1.05;
     std::vector<bool> best(cost.size(), true);
     for (size_t i = 0; i < cost.size(); ++i)
         for (size_t j = 0; j < cost.size(); ++j)
-            if (j != i && cost[j] <= cost[i] && error[j] <= error[i] && (cost[j] < cost[i] || error[j] < error[i]))
+            if (j != i && error[j] <= error[i] && cost[j] <= cost[i] * kSame &&
+                (error[j] < error[i] || cost[j] * kSame < cost[i]))
                 best[i] = false;
     return best;
 }
@@ -346,8 +351,8 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
         setup.layers = {l};
         setup.photons = uint64_t(photons);
         setup.threads = threads;
-        setup.bin_width = 0.1;
-        setup.bins = 100;
+        setup.bin_width = 0.25;  // wide enough that 4 mm out a bin holds ~1,000 photons of 400,000
+        setup.bins = 40;
         const McResult truth = trace_photons(setup);
         LayeredOptions fine;
         fine.grid = 1024;
@@ -356,9 +361,11 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
         md << "\n## FFT grid and extent: accuracy against cost (two 1 mm halves of a 2 mm slab)\n\n"
            << "Totals against the Monte Carlo of the whole slab (R " << fmt(truth.R) << " +- " << fmt(truth.R_stderr, 2)
            << ", T " << fmt(truth.T) << " +- " << fmt(truth.T_stderr, 2)
-           << "); profile against grid 1024 over 128 mm (the grid's own error, charted) and against Monte Carlo "
-              "(the model's error as well), at radii 0.5 to 8 mm.\n\n"
-           << "| grid | extent (mm) | cell (mm) | error R, T vs MC | max rel. error of R(r) | ... vs MC | ms | best |\n"
+           << "); profile against Monte Carlo at radii 0.5 to 4 mm (the model's error and the grid's; further out the "
+              "Monte Carlo's own noise passes 5 %), and against grid 1024 over 128 mm at 0.5 to 8 mm (the grid's own "
+              "error; 512 over 64 mm has the same cells, so its error there is small by construction). The chart and "
+              "the best column use the larger of the errors against Monte Carlo.\n\n"
+           << "| grid | extent (mm) | cell (mm) | error R, T vs MC | max rel. error of R(r) vs grid 1024 | ... vs MC | ms | best |\n"
            << "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
         struct Setting { int grid; double extent; };
         std::vector<Setting> settings;
@@ -384,7 +391,8 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
                     return x.channel[0].R_profile[b] * (1.0 - t) + x.channel[0].R_profile[b + 1] * t;
                 };
                 ep = std::max(ep, std::abs(at(r) / at(reference) - 1.0));
-                // Monte Carlo bins 0.1 mm wide, linear between their centres.
+                if (radius > 4.0) continue;
+                // Monte Carlo bins 0.25 mm wide, linear between their centres.
                 const auto& rc = truth.bin_centres;
                 const size_t b = size_t(std::upper_bound(rc.begin(), rc.end(), radius) - rc.begin()) - 1;
                 const double t = (radius - rc[b]) / (rc[b + 1] - rc[b]);
@@ -392,7 +400,7 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
                 ep_mc = std::max(ep_mc, std::abs(at(r) / mc - 1.0));
             }
             cost.push_back(ms);
-            error.push_back(std::max(et, ep));
+            error.push_back(std::max(et, ep_mc));
             std::ostringstream row;
             row << "| " << st.grid << " | " << st.extent << " | " << fmt(st.extent / st.grid, 3) << " | " << fmt(et, 3)
                 << " | " << fmt(ep, 3) << " | " << fmt(ep_mc, 3) << " | " << fmt(ms, 3) << " | ";

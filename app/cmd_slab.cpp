@@ -58,7 +58,7 @@ void refuse_unused_options(const SlabOptions& o) {
         refuse(o, {"--pairs", "--tolerance", "--source", "--no-km", "--grid", "--extent"},
                "is for the diffusion models, not --model mc");
     if (o.model == "dipole") refuse(o, {"--pairs", "--tolerance"}, "is for --model multipole (the dipole is one pair)");
-    if (o.layers_file.empty()) refuse(o, {"--no-km", "--grid", "--extent"}, "is for --layers");
+    if (o.layers_file.empty()) refuse(o, {"--no-km", "--grid", "--extent", "--from-below"}, "is for --layers");
 }
 
 void check_shared_options(const SlabOptions& o) {
@@ -70,6 +70,26 @@ void check_shared_options(const SlabOptions& o) {
     if (o.seed < 0) throw InputError("--seed must be >= 0");
 }
 
+// The stack seen from below: the same layers in reverse order, each index
+// now relative to the layer that was below it (the air below becomes the
+// air above). Reflectance from below differs from above wherever the stack
+// is asymmetric.
+std::vector<optics::LayerSpec> turned_over(const std::vector<optics::LayerSpec>& layers, const std::string& file) {
+    std::vector<double> index{1.0};  // absolute: air, the layers, air
+    for (const optics::LayerSpec& l : layers) index.push_back(index.back() * l.eta);
+    index.push_back(1.0);
+    std::vector<optics::LayerSpec> over;
+    for (size_t i = layers.size(); i-- > 0;) {
+        optics::LayerSpec l = layers[i];
+        if (std::isinf(l.thickness)) throw InputError(file + ": --from-below needs a stack of finite layers");
+        if (l.roughness > 0.0)
+            throw InputError(file + ": --from-below: roughness is a layer's top surface; a rough bottom is not modelled");
+        l.eta = index[i + 1] / index[i + 2];
+        over.push_back(l);
+    }
+    return over;
+}
+
 // Reads the layers file and checks the options that go with layers.
 std::vector<optics::LayerSpec> read_layers(const SlabOptions& o) {
     for (const char* name : {"--sigma-a", "--sigma-s", "--g", "--eta", "--eta-below", "--thickness", "--roughness",
@@ -79,7 +99,8 @@ std::vector<optics::LayerSpec> read_layers(const SlabOptions& o) {
                              "--pairs and --source: give a layer's values in the file");
     if (o.model == "dipole") throw InputError("--layers takes --model multipole or mc");
     check_shared_options(o);
-    const std::vector<optics::LayerSpec> layers = read_layer_file(o.layers_file);
+    std::vector<optics::LayerSpec> layers = read_layer_file(o.layers_file);
+    if (o.from_below) layers = turned_over(layers, o.layers_file);
     for (size_t i = 1; i < layers.size(); ++i)
         if (layers[i].roughness > 0.0 && o.model == "mc")
             throw InputError(o.layers_file + ": layer " + std::to_string(i) +

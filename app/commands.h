@@ -39,6 +39,7 @@ struct SlabOptions {
     double roughness = 0;     // RMS slope of the top surface (Beckmann), 0 = smooth
     std::string layers_file;  // --layers: replaces the single-layer options
     bool no_km = false;
+    bool from_below = false;  // --layers: the stack turned over
     int grid = 256;
     double extent = 0.0;
     long long photons = 1000000;  // mc

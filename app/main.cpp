@@ -79,6 +79,7 @@ int main(int argc, char** argv) {
         cmd->add_option("--roughness", slab_options.roughness, "RMS slope of a rough top surface (Beckmann)");
         cmd->add_option("--layers", slab_options.layers_file, "a JSON list of layers, top first (replaces the above)");
         cmd->add_flag("--no-km", slab_options.no_km, "layers: drop the frequency-space correction (first term only)");
+        cmd->add_flag("--from-below", slab_options.from_below, "layers: light the stack from below (its last layer first)");
         cmd->add_option("--grid", slab_options.grid, "layers: FFT grid size (power of two)");
         cmd->add_option("--extent", slab_options.extent, "layers: grid width in mm (default: 64 mean free paths)");
         cmd->add_option("--source", slab_options.source,

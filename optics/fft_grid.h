@@ -32,8 +32,8 @@ public:
     // centred on cell (0, 0) and wrapped, zero beyond a quarter of the grid
     // (so one convolution of two kernels cannot wrap around), scaled to sum
     // to `total` (so sampling a sharp peak cannot change the energy). If
-    // `cut` is given, it is raised to the share of `total` that lies beyond
-    // the quarter grid.
+    // `cut` is given, it is raised to the profile's integral beyond the
+    // quarter grid (light per unit of light in).
     Spectrum kernel(double total, const std::function<double(double)>& profile, double* cut = nullptr) const;
 
     // Back to space, per mm^2 at radii b * cell, b < n / 2: the cells

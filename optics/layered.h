@@ -30,10 +30,11 @@ struct LayeredOptions {
 struct ChannelResult {
     double R = 0, T = 0, T_direct = 0;
     std::vector<double> R_profile, T_profile;  // per mm^2 at `radii`
-    // The largest share of any layer's profile total that lay beyond the
-    // kernels' reach (a quarter of the grid) and was folded back in by the
-    // normalisation: the profiles are too high by about this much near the
-    // source and cut off beyond. Raise --extent (and --grid) if it matters.
+    // The most light (per unit of light entering a layer) that any layer's
+    // profile carried beyond the kernels' reach, a quarter of the grid, and
+    // that the normalisation folded back inside: the profiles are that much
+    // too high inside and cut off beyond. Raise --extent (and --grid) if it
+    // matters.
     double profile_cut = 0;
 };
 

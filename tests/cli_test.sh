@@ -196,6 +196,17 @@ case "$case_name" in
     expect_slab_error "g out of range in a layer" --layers "$work/g.json"
     printf '[{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":1' >"$work/broken.json"
     expect_slab_error "malformed layers file" --layers "$work/broken.json"
+    # Seen from below: a symmetric stack looks the same, an asymmetric one not.
+    printf '[{"sigma_a":[0.1,0.1,0.1],"sigma_s":[5,5,5],"g":0,"eta":1.4,"thickness":0.3},{"sigma_a":[0.01,0.01,0.01],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":2},{"sigma_a":[0.1,0.1,0.1],"sigma_s":[5,5,5],"g":0,"eta":1,"thickness":0.3}]' >"$work/sym.json"
+    above=$("$bin" slab --layers "$work/sym.json" --json | grep -o '"R":\[[^]]*\]')
+    below=$("$bin" slab --layers "$work/sym.json" --from-below --json | grep -o '"R":\[[^]]*\]')
+    [ "$above" = "$below" ] || fail "symmetric stack: R from below $below differs from above $above"
+    printf '[{"sigma_a":[0.1,0.1,0.1],"sigma_s":[5,5,5],"g":0,"eta":1.4,"thickness":0.3},{"sigma_a":[0.01,0.01,0.01],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":2}]' >"$work/asym.json"
+    above=$("$bin" slab --layers "$work/asym.json" --json | grep -o '"R":\[[^,]*')
+    below=$("$bin" slab --layers "$work/asym.json" --from-below --json | grep -o '"R":\[[^,]*')
+    [ "$above" != "$below" ] || fail "asymmetric stack: R from below equals R from above"
+    echo "asymmetric stack: from above $above, from below $below"
+    expect_slab_error "--from-below with a semi-infinite layer" --layers "$work/layers.json" --from-below
     "$bin" profile --layers "$work/layers.json" --out "$work/layers.csv" 2>/dev/null
     head -1 "$work/layers.csv" | grep -q "^r_mm,R_r,R_g,R_b,T_r,T_g,T_b$" || fail "layers profile header"
     rough=$("$bin" slab --sigma-a 0.05 --sigma-s 1 --thickness inf --eta 1.4 --roughness 0.5 --json)
