@@ -318,6 +318,11 @@ int cmd_slab(const SlabOptions& o) {
     } else {
         std::cout << std::setprecision(6) << "R " << m.total_reflectance() << "\nT " << m.total_transmittance()
                   << "\nT_direct " << t_direct << "\ndipole_pairs " << m.dipoles() << "\n";
+        if (o.roughness > 0.0) {
+            std::cout << "rho_d " << j["rho_d"].get<double>() << "\nA " << j["A"].get<double>() << "\nrho_dt";
+            for (double v : j["rho_dt"]) std::cout << " " << v;
+            std::cout << "  (at cos theta = (i + 0.5) / 16)\n";
+        }
     }
     return 0;
 }

@@ -3,6 +3,7 @@
 #include "optics/layered.h"
 
 #include <cmath>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -81,8 +82,10 @@ TEST(Layered, TwoHalvesAgainstMonteCarlo) {
     mc.layers = {l, l};
     mc.photons = 100000;
     const McResult truth = trace_photons(mc);
-    EXPECT_NEAR(km.channel[0].R, truth.R, 0.02);
-    EXPECT_NEAR(km.channel[0].T, truth.T, 0.02);
+    // Diffusion's own error here is under 0.005 (docs: 0.499 / 0.335 against
+    // 0.500 / 0.331); the Monte Carlo's standard error is 0.0015.
+    EXPECT_NEAR(km.channel[0].R, truth.R, 0.01);
+    EXPECT_NEAR(km.channel[0].T, truth.T, 0.01);
     EXPECT_GT(std::abs(plain.channel[0].T - truth.T), 2.0 * std::abs(km.channel[0].T - truth.T));
     EXPECT_LT(plain.channel[0].R, km.channel[0].R);
 }
@@ -140,6 +143,15 @@ TEST(Layered, ThinTopUnderAReflectiveBoundary) {
 // result stays finite and a reflectance.
 TEST(Layered, NearlyLosslessStack) {
     const LayeredResult r = combine_layers({layer(1e-7, 5.0, 20.0), layer(1e-7, 5.0, 20.0)}, LayeredOptions{});
+    // A lossless layer 1e8 mean free paths thick over a lossless half-space:
+    // 1 - Rd'_s Rd_l rounds to 0 in single precision at zero frequency (R
+    // was infinite without the clamp).
+    LayerSpec half_space = layer(0.0, 1.0, 1.0);
+    half_space.thickness = std::numeric_limits<double>::infinity();
+    const LayeredResult mirror = combine_layers({layer(0.0, 1.0, 1e8), half_space}, LayeredOptions{});
+    EXPECT_TRUE(std::isfinite(mirror.channel[0].R));
+    EXPECT_NEAR(mirror.channel[0].R, 1.0, 1e-3);
+    for (double v : mirror.channel[0].R_profile) EXPECT_TRUE(std::isfinite(v) && v >= 0.0);
     for (const ChannelResult& c : r.channel) {
         EXPECT_TRUE(std::isfinite(c.R) && std::isfinite(c.T));
         EXPECT_GT(c.R, 0.5);

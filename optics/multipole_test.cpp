@@ -116,14 +116,15 @@ TEST(Multipole, NearlyAbsorptionFreeIsCheap) {
 // Table 1 (1 mm mean free path; the paper's albedo is not given: the notes'
 // 0.99873 reproduces its dipole column, 90.2 % at every thickness).
 TEST(Multipole, PaperTable1) {
-    struct Row { double d, r, t; };
-    for (const Row row : {Row{2, 0.498, 0.481}, Row{10, 0.838, 0.138}, Row{20, 0.890, 0.059}}) {
+    // Within half a point of the paper's multipole column, but for T at 2
+    // mean free paths: 49.7 % against 48.1 % (its other parameters are
+    // unknown; docs/optics.md gives the differences).
+    struct Row { double d, r, t, t_tolerance; };
+    for (const Row row : {Row{2, 0.498, 0.481, 0.02}, Row{10, 0.838, 0.138, 0.005}, Row{20, 0.890, 0.059, 0.005}}) {
         const Multipole m = Multipole::converged(notes_slab(row.d), 1e-6, SourceDepth::MeanFreePath);
         EXPECT_NEAR(Multipole(notes_slab(row.d), 0, SourceDepth::MeanFreePath).total_reflectance(), 0.902, 0.0006);
-        // Within 2 points of the paper's multipole column (its other
-        // parameters are unknown; docs give the differences).
-        EXPECT_NEAR(m.total_reflectance(), row.r, 0.02) << row.d;
-        EXPECT_NEAR(m.total_transmittance(), row.t, 0.02) << row.d;
+        EXPECT_NEAR(m.total_reflectance(), row.r, 0.005) << row.d;
+        EXPECT_NEAR(m.total_transmittance(), row.t, row.t_tolerance) << row.d;
     }
 }
 
