@@ -335,16 +335,18 @@ int cmd_profile(const SlabOptions& o, const std::string& out, double r_max, int 
         if (!(r_max > 0.0) || !std::isfinite(r_max)) throw InputError("--r-max must be a number > 0 (mm)");
         if (samples < 2 || samples > 1000000) throw InputError("--samples must lie in [2, 1000000]");
         std::vector<optics::LayerSpec> layers;
+        double n_below = 1.0;  // a single slab may have another medium below
         if (!o.layers_file.empty()) {
             layers = read_layers(o);
         } else {
             const optics::Slab s = validated(o);
-            if (s.eta_below != s.eta) throw InputError("profile --model mc: give a different medium below with --layers");
             layers = {grey_layer(s, o.roughness)};
+            n_below = s.eta / s.eta_below;
         }
         const int channels = o.layers_file.empty() ? 1 : 3;
         for (int c = 0; c < channels; ++c) {
             optics::McSetup setup = mc_setup(layers, c, o);
+            setup.n_below = n_below;
             setup.bin_width = r_max / samples;
             setup.bins = samples;
             const optics::McResult r = optics::trace_photons(setup);
