@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <map>
 #include <mutex>
@@ -323,15 +324,28 @@ McResult trace_photons(const McSetup& setup) {
         }
         done.fetch_add(1);
     };
+    // An exception in a worker (std::bad_alloc for a huge tally) stops the
+    // hand-out of chunks and is rethrown here, not std::terminate.
+    std::exception_ptr failure;
+    std::mutex failure_lock;
+    auto guarded = [&](uint64_t c) {
+        try {
+            run_chunk(c);
+        } catch (...) {
+            std::lock_guard<std::mutex> lock(failure_lock);
+            if (!failure) failure = std::current_exception();
+            next.store(chunks);
+        }
+    };
     auto work = [&] {
-        for (uint64_t c; (c = next.fetch_add(1)) < chunks;) run_chunk(c);
+        for (uint64_t c; (c = next.fetch_add(1)) < chunks;) guarded(c);
     };
     std::vector<std::thread> threads;
     for (int i = 1; i < std::max(1, setup.threads); ++i) threads.emplace_back(work);
     // The calling thread works too, and reports progress between its chunks.
     auto last = std::chrono::steady_clock::now();
     for (uint64_t c; (c = next.fetch_add(1)) < chunks;) {
-        run_chunk(c);
+        guarded(c);
         const auto now = std::chrono::steady_clock::now();
         if (setup.progress && now - last > std::chrono::seconds(1)) {
             setup.progress(double(done.load()) / double(chunks));
@@ -339,6 +353,7 @@ McResult trace_photons(const McSetup& setup) {
         }
     }
     for (auto& t : threads) t.join();
+    if (failure) std::rethrow_exception(failure);
 
     McResult r;
     const double total = double(setup.photons);
