@@ -130,6 +130,24 @@ optics::McSetup mc_setup(const std::vector<optics::LayerSpec>& layers, int chann
     if (std::isinf(setup.layers.back().thickness) && setup.layers.back().sigma_a == 0.0)
         throw InputError("--model mc: an absorption-free semi-infinite layer keeps photons for ever; give it sigma_a > 0 "
                          "or a finite thickness");
+    // Nearly so is nearly as bad. A photon's walk ends by leaving (within
+    // about tau^2 steps in a slab of optical depth tau; half of the walks
+    // within the first few) or by roulette (after about 9.2 / (1 - albedo)
+    // steps): the mean is about the square root of the smaller, as the time
+    // to leave a half-space has a t^(-1/2) tail. About 80 ns per step here.
+    double tau = 0.0, albedo = 0.0;
+    for (const optics::McLayer& m : setup.layers) {
+        tau += (m.sigma_a + m.sigma_s) * m.thickness;  // infinite for a half-space
+        albedo = std::max(albedo, m.sigma_s / (m.sigma_a + m.sigma_s));
+    }
+    const double by_roulette = albedo < 1.0 ? 9.2 / (1.0 - albedo) : INFINITY;
+    const double steps = std::sqrt(std::min(tau * tau, by_roulette)) * double(o.photons);
+    if (steps > 1e10) {
+        std::ostringstream why;
+        why << std::setprecision(2) << "--model mc: about " << steps * 80e-9 / 60.0 / 2.0
+            << " minutes on two cores (nearly absorption-free and optically deep); use fewer --photons";
+        throw InputError(why.str());
+    }
     setup.n_above = setup.n_below = 1.0;
     setup.top_roughness = layers.front().roughness;
     setup.photons = uint64_t(o.photons);

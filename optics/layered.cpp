@@ -219,9 +219,11 @@ LayeredResult combine_layers(const std::vector<LayerSpec>& layers, const Layered
         // T counts the diffuse light plus what the similarity relation
         // (sigma_t' < sigma_t) kept in the unscattered beam although it
         // scattered forward, so that R + T + T_direct + absorption balance.
-        // Single precision: a lossless stack can come to 1 + 1e-7.
-        ch.R = std::min(double(stack.rc[0].real()), 1.0);
-        ch.T = std::min(stack.tc[0].real() + (stack.ec - unscattered), 1.0 - ch.R);
+        // Single precision: a lossless stack can come to 1 + 1e-7. With g < 0
+        // (sigma_t' > sigma_t) the similarity term is negative, and where
+        // nearly nothing is transmitted it can outweigh T: T is held at 0.
+        ch.R = std::clamp(double(stack.rc[0].real()), 0.0, 1.0);
+        ch.T = std::clamp(stack.tc[0].real() + (stack.ec - unscattered), 0.0, 1.0 - ch.R);
         ch.T_direct = direct;
         ch.R_profile = grid.radial_profile(stack.rc);
         ch.T_profile = grid.radial_profile(stack.tc);

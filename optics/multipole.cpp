@@ -39,6 +39,31 @@ double diffuse_unscattered(double tau) {
     return sum;
 }
 
+namespace {
+
+// 1 - 2 E3(tau), the diffuse light that scatters in a layer, without the
+// cancellation of 1 - diffuse_unscattered(tau): at tau ~ 1e-17 that was 0,
+// and the source depth below 0 / 0.
+double diffuse_scattered(double tau) {
+    constexpr int kSteps = 512;
+    double sum = 0.0;
+    for (int i = 0; i < kSteps; ++i) {
+        const double mu = (i + 0.5) / kSteps;
+        sum += 2.0 * mu * -std::expm1(-tau / mu) / kSteps;
+    }
+    return sum;
+}
+
+// 1 - e^(-x) (1 + x), the share of a path of optical length x that has
+// scattered, weighted by depth; a series below 1e-3, where the two terms
+// cancel.
+double scattered_depth_weight(double x) {
+    if (x < 1e-3) return x * x * (0.5 - x * (1.0 / 3.0 - x * (0.125 - x / 30.0)));
+    return -std::expm1(-x) - x * std::exp(-x);
+}
+
+}  // namespace
+
 Multipole::Multipole(const Slab& slab, int n, SourceDepth source) : slab_(slab), source_(source) {
     alpha_ = slab.albedo_reduced();
     sigma_tr_ = slab.sigma_tr();
@@ -55,9 +80,9 @@ Multipole::Multipole(const Slab& slab, int n, SourceDepth source) : slab_(slab),
             double depth = 0.0;
             for (int i = 0; i < kSteps; ++i) {
                 const double mu = (i + 0.5) / kSteps, x = tau / mu;
-                depth += 2.0 * mu * mu * l * (-std::expm1(-x) - x * std::exp(-x)) / kSteps;
+                depth += 2.0 * mu * mu * l * scattered_depth_weight(x) / kSteps;
             }
-            const double scatters = 1.0 - diffuse_unscattered(tau);
+            const double scatters = diffuse_scattered(tau);
             l = depth / scatters;
             alpha_ *= scatters;
         }

@@ -182,6 +182,26 @@ TEST(Multipole, VanishingThickness) {
     EXPECT_LT(previous, 1e-10);
 }
 
+// The same for the diffuse-incidence source, down to an optical depth of
+// 1e-18 (the input bounds allow it): its depth was 0 / 0 below 1e-17. The
+// light that scatters at all is 1 - 2 E3(tau), about 2 tau (1 + tau ln tau).
+TEST(Multipole, VanishingThicknessDiffuseSource) {
+    double previous = INFINITY;
+    for (double d = 1.0; d > 1e-18; d /= 10.0) {
+        Slab s;
+        s.sigma_a = 0.1;
+        s.sigma_s = 0.9;
+        s.thickness = d;
+        const Multipole m = Multipole::converged(s, 1e-6, SourceDepth::DiffuseFirstScatter);
+        const double r = m.total_reflectance(), t = m.total_transmittance();
+        EXPECT_TRUE(std::isfinite(r) && std::isfinite(t)) << d;
+        EXPECT_LE(r, previous) << d;
+        EXPECT_LE(r + t, 2.0 * d * 1.01) << d;  // no more than scatters
+        previous = r;
+    }
+    EXPECT_GT(previous, 0.0);
+}
+
 // No absorption: sigma_tr = 0, the image series does not converge, and the
 // totals come from its limit; with albedo 1 and matched indices all light
 // leaves, and the limit joins the absorbing case continuously.
