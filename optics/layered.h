@@ -40,7 +40,7 @@ struct ChannelResult {
 
 struct LayeredResult {
     std::array<ChannelResult, 3> channel;
-    std::vector<double> radii;  // mm, annulus centres
+    std::vector<double> radii;  // mm, b * cell for b < grid / 2 (kernels reach grid / 4: see profile_cut)
     double cell = 0;            // mm
     std::vector<int> dipoles;   // per layer, most over the channels
 };

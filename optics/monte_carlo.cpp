@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <exception>
 #include <limits>
 #include <map>
@@ -290,6 +291,9 @@ McResult trace_photons(const McSetup& setup) {
     std::map<uint64_t, std::pair<Tally, std::pair<double, double>>> waiting;
     uint64_t next_to_add = 0;
     std::mutex merge;
+    std::condition_variable merged;
+    bool aborted = false;  // a chunk failed: nothing more is added
+    const size_t kMaxWaiting = 2 * size_t(std::max(1, setup.threads)) + 2;
     std::atomic<uint64_t> next{0}, done{0};
     auto run_chunk = [&](uint64_t c) {
         Tally t;
@@ -304,7 +308,11 @@ McResult trace_photons(const McSetup& setup) {
             r2 += (t.R - r0) * (t.R - r0);
             t2 += (t.T - t0) * (t.T - t0);
         }
-        std::lock_guard<std::mutex> lock(merge);
+        std::unique_lock<std::mutex> lock(merge);
+        // Memory stays bounded: a chunk finished far ahead of the next one
+        // to add waits (that one itself never waits, so the run moves on).
+        merged.wait(lock, [&] { return c == next_to_add || waiting.size() < kMaxWaiting || aborted; });
+        if (aborted) return;
         waiting.emplace(c, std::make_pair(std::move(t), std::make_pair(r2, t2)));
         for (auto it = waiting.find(next_to_add); it != waiting.end(); it = waiting.find(next_to_add)) {
             const Tally& in = it->second.first;
@@ -322,6 +330,8 @@ McResult trace_photons(const McSetup& setup) {
             waiting.erase(it);
             ++next_to_add;
         }
+        lock.unlock();
+        merged.notify_all();
         done.fetch_add(1);
     };
     // An exception in a worker (std::bad_alloc for a huge tally) stops the
@@ -332,9 +342,16 @@ McResult trace_photons(const McSetup& setup) {
         try {
             run_chunk(c);
         } catch (...) {
-            std::lock_guard<std::mutex> lock(failure_lock);
-            if (!failure) failure = std::current_exception();
+            {
+                std::lock_guard<std::mutex> lock(failure_lock);
+                if (!failure) failure = std::current_exception();
+            }
             next.store(chunks);
+            {
+                std::lock_guard<std::mutex> lock(merge);
+                aborted = true;
+            }
+            merged.notify_all();
         }
     };
     auto work = [&] {
