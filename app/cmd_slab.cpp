@@ -283,6 +283,15 @@ int cmd_slab(const SlabOptions& o) {
         const optics::LayeredResult r = optics::combine_layers(layers, layered_options(o));
         nlohmann::json j = {{"model", "multipole"}, {"layers", layers.size()}, {"km", !o.no_km},
                             {"grid", o.grid}, {"cell_mm", r.cell}, {"dipole_pairs", r.dipoles}};
+        if (layers.front().roughness > 0.0) {
+            // The rough top's Eq. 24-26 terms, for a renderer (Eq. 25); the
+            // same for every channel (one index per layer).
+            const double eta = layers.front().eta, m = layers.front().roughness;
+            j["roughness"] = m;
+            j["rho_d"] = optics::rough_internal_reflectance(m, eta);
+            j["A"] = optics::rough_boundary_factor(m, eta);
+            j["rho_dt"] = optics::RoughSurface(m, eta).rho_dt_table(16);  // at cos theta = (i + 0.5) / 16
+        }
         for (const char* key : {"R", "T", "T_direct", "profile_cut"}) {
             nlohmann::json list = nlohmann::json::array();
             for (const auto& c : r.channel)

@@ -211,6 +211,9 @@ case "$case_name" in
     head -1 "$work/layers.csv" | grep -q "^r_mm,R_r,R_g,R_b,T_r,T_g,T_b$" || fail "layers profile header"
     rough=$("$bin" slab --sigma-a 0.05 --sigma-s 1 --thickness inf --eta 1.4 --roughness 0.5 --json)
     for key in rho_d rho_dt A roughness; do echo "$rough" | grep -q "\"$key\"" || fail "rough slab: no $key"; done
+    printf '[{"sigma_a":[0.05,0.1,0.2],"sigma_s":[1,1,1],"g":0,"eta":1.4,"thickness":0.5,"roughness":0.5},{"sigma_a":[0.01,0.02,0.04],"sigma_s":[2,2,2],"g":0,"eta":1.0,"thickness":"inf"}]' >"$work/rough.json"
+    rough_layers=$("$bin" slab --layers "$work/rough.json" --json)
+    for key in rho_d rho_dt A roughness; do echo "$rough_layers" | grep -q "\"$key\"" || fail "rough stack: no $key"; done
     expect_slab_error "negative roughness" --sigma-a 1 --sigma-s 1 --thickness 1 --roughness -1
     "$bin" slab --model mc --sigma-a 1 --sigma-s 1 --thickness 1 --roughness 0.5 --photons 20000 --json | grep -q '"specular"' ||
       fail "rough Monte Carlo: no specular"
