@@ -10,17 +10,14 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
-#include "image/image_io.h"
+#include "app/layer_file.h"
+#include "app/profile_table.h"
 #include "optics/layered.h"
 #include "optics/monte_carlo.h"
 #include "optics/multipole.h"
 #include "optics/rough_surface.h"
 #include "raster/stage_times.h"
 #include "scene/input_error.h"
-#include "app/layer_file.h"
-#include "app/profile_table.h"
-
-#include <fstream>
 
 namespace st {
 

@@ -104,7 +104,9 @@ TEST(ThinSlabModel, ReflectedPlusTransmittedNeverExceedsIncident) {
             const double interacting = -std::expm1(-double(tau1) / mu0);
             EXPECT_LE(escaping, interacting * (1.0 + 1e-4)) << tau1 << " " << mu0;
             EXPECT_GT(escaping, 0.0);
-            if (tau1 <= 1e-3f && mu0 >= 0.3f) EXPECT_GT(escaping / interacting, 0.99) << mu0;
+            if (tau1 <= 1e-3f && mu0 >= 0.3f) {
+                EXPECT_GT(escaping / interacting, 0.99) << mu0;
+            }
         }
 }
 
