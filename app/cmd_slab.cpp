@@ -42,24 +42,31 @@ void require_finite(const nlohmann::json& j, const std::string& key = "result") 
 }
 
 // The options a single slab and a stack share.
-// An option that does nothing for the chosen model is refused, not ignored:
-// a user who gives --grid to a single slab believes it did something.
+// An option that does nothing for the chosen model is not ignored silently.
+// Where the one command line allows it with any model (a script may
+// pass --photons to all three), it gets a one-line note on stderr; options
+// of stacks given without a stack are refused.
+void note_unused(const SlabOptions& o, std::initializer_list<const char*> names, const std::string& why) {
+    for (const char* name : names)
+        if (o.given.count(name)) std::cerr << "shadertwin: note: " << name << " " << why << ", ignored\n";
+}
+
 void refuse(const SlabOptions& o, std::initializer_list<const char*> names, const std::string& why) {
     for (const char* name : names)
         if (o.given.count(name)) throw InputError(std::string(name) + " " + why);
 }
 
-void refuse_unused_options(const SlabOptions& o) {
-    if (o.model != "mc") refuse(o, {"--photons", "--seed", "--threads"}, "is for --model mc");
-    if (o.model == "mc")
-        refuse(o, {"--pairs", "--tolerance", "--source", "--no-km", "--grid", "--extent"},
-               "is for the diffusion models, not --model mc");
-    if (o.model == "dipole") refuse(o, {"--pairs", "--tolerance"}, "is for --model multipole (the dipole is one pair)");
+void check_unused_options(const SlabOptions& o) {
     if (o.layers_file.empty()) refuse(o, {"--no-km", "--grid", "--extent", "--from-below"}, "is for --layers");
+    if (o.model != "mc") note_unused(o, {"--photons", "--seed", "--threads"}, "is for --model mc");
+    if (o.model == "mc")
+        note_unused(o, {"--pairs", "--tolerance", "--source", "--no-km", "--grid", "--extent"},
+                    "is for the diffusion models, not --model mc");
+    if (o.model == "dipole") note_unused(o, {"--pairs", "--tolerance"}, "is for --model multipole (the dipole is one pair)");
 }
 
 void check_shared_options(const SlabOptions& o) {
-    refuse_unused_options(o);
+    check_unused_options(o);
     if (!(o.tolerance > 0.0 && o.tolerance < 1.0)) throw InputError("--tolerance must lie in (0, 1)");
     // About 1 us per photon per core on this machine for albedos near 0.9;
     // 2e8 photons is several minutes, past that a run is a mistake.
