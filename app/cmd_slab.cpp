@@ -12,6 +12,7 @@
 #include "app/commands.h"
 #include "app/layer_file.h"
 #include "app/profile_table.h"
+#include "optics/diffuse_fresnel.h"
 #include "optics/layered.h"
 #include "optics/monte_carlo.h"
 #include "optics/multipole.h"
@@ -22,12 +23,6 @@
 namespace st {
 
 namespace {
-
-// Normal-incidence Fresnel reflectance of an interface with relative index eta.
-double fresnel_normal(double eta) {
-    const double r = (eta - 1.0) / (eta + 1.0);
-    return r * r;
-}
 
 // No NaN or infinity reaches a result: inputs are bounded so none should
 // arise, and if one does it is a defect to report, not a number to print.
@@ -324,7 +319,7 @@ int cmd_slab(const SlabOptions& o) {
     // Unscattered light at normal incidence: refracted in, attenuated by
     // sigma_t over the thickness, refracted out (interreflections ignored).
     const double t_direct = s.semi_infinite() ? 0.0
-                                              : (1.0 - fresnel_normal(s.eta)) * (1.0 - fresnel_normal(s.eta_below)) *
+                                              : (1.0 - optics::fresnel_normal(s.eta)) * (1.0 - optics::fresnel_normal(s.eta_below)) *
                                                     std::exp(-s.sigma_t() * s.thickness);
     nlohmann::json j = {{"model", o.model},
                         {"R", m.total_reflectance()},

@@ -45,6 +45,11 @@ double fresnel_dielectric(double c, double eta) {
     return 0.5 * (rs * rs + rp * rp);
 }
 
+double fresnel_normal(double eta) {
+    const double r = (eta - 1.0) / (eta + 1.0);
+    return r * r;
+}
+
 double diffuse_fresnel_reflectance(double eta) {
     if (eta >= kFitLow && eta <= kFitHigh) return diffuse_fresnel_fit(eta);
     return diffuse_fresnel_integral(eta);

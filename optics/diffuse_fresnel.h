@@ -10,6 +10,10 @@ namespace st::optics {
 // reflection gives 1).
 double fresnel_dielectric(double c, double eta);
 
+// Its value at normal incidence, ((eta - 1) / (eta + 1))^2, the same from
+// either side.
+double fresnel_normal(double eta);
+
 // F_dr(eta): the reflectance of the boundary for diffuse light inside a
 // medium whose index relative to the outside is eta, the average of
 // fresnel_dielectric(c, 1 / eta) weighted by 2 c dc. Eq. 8's fit where it is

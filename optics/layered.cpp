@@ -45,11 +45,6 @@ namespace {
 using Complex = std::complex<float>;
 constexpr double kPi = 3.14159265358979323846;
 
-double fresnel_normal(double eta) {
-    const double r = (eta - 1.0) / (eta + 1.0);
-    return r * r;
-}
-
 // Where diffuse light that crosses a layer unscattered comes out, relative to
 // where it went in: a Lambertian point source seen through a slab of
 // thickness d, d^2 e^(-sigma_t' R) / (pi R^4) with R^2 = r^2 + d^2 (cosine

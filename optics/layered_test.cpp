@@ -32,10 +32,7 @@ LayerSpec layer(double sigma_a, double sigma_s, double d, double eta = 1.0) {
 // the peak value).
 TEST(Layered, OneLayerIsItsMultipole) {
     const LayeredResult r = combine_layers({layer(0.01, 1.0, 2.0)}, LayeredOptions{});
-    Slab s;
-    s.sigma_a = 0.01;
-    s.sigma_s = 1.0;
-    s.thickness = 2.0;
+    Slab s{.sigma_a = 0.01, .sigma_s = 1.0, .thickness = 2.0};
     const Multipole m = Multipole::converged(s, 1e-6);
     EXPECT_NEAR(r.channel[0].R, m.total_reflectance(), 1e-6);
     EXPECT_NEAR(r.channel[0].T, m.total_transmittance(), 1e-6);
@@ -53,10 +50,7 @@ TEST(Layered, OneLayerIsItsMultipole) {
 // scaled the whole profile by 1/21. Cell means keep the far profile.
 TEST(Layered, NarrowPeakInACoarseGrid) {
     const LayeredResult r = combine_layers({layer(1e-4, 10.0, 50.0)}, LayeredOptions{});
-    Slab s;
-    s.sigma_a = 1e-4;
-    s.sigma_s = 10.0;
-    s.thickness = 50.0;
+    Slab s{.sigma_a = 1e-4, .sigma_s = 10.0, .thickness = 50.0};
     const Multipole m = Multipole::converged(s, 1e-6);
     EXPECT_GT(r.cell, 1.0);
     EXPECT_LT(r.channel[0].profile_cut, 0.01);
@@ -96,10 +90,7 @@ TEST(Layered, TwoHalvesAgainstMonteCarlo) {
 // 1.4 top over the same semi-infinite medium R 0.380 against 0.390. With the
 // collimated and diffuse fluxes apart, within 0.005.
 TEST(Layered, SplittingASlabChangesLittle) {
-    Slab whole;
-    whole.sigma_a = 0.01;
-    whole.sigma_s = 1.0;
-    whole.thickness = 2.0;
+    Slab whole{.sigma_a = 0.01, .sigma_s = 1.0, .thickness = 2.0};
     const Multipole m = Multipole::converged(whole, 1e-6);
     const LayeredResult halves = combine_layers({layer(0.01, 1.0, 1.0), layer(0.01, 1.0, 1.0)}, LayeredOptions{});
     EXPECT_NEAR(halves.channel[0].R, m.total_reflectance(), 0.005);

@@ -14,10 +14,7 @@ namespace {
 
 // The notes' example: reduced albedo 0.99873, eta = 1, sigma_t' = 1/mm.
 Slab notes_slab(double thickness) {
-    Slab s;
-    s.sigma_a = 1.0 - 0.99873;
-    s.sigma_s = 0.99873;
-    s.thickness = thickness;
+    Slab s{.sigma_a = 1.0 - 0.99873, .sigma_s = 0.99873, .thickness = thickness};
     return s;
 }
 
@@ -143,10 +140,7 @@ TEST(Multipole, ThickSlabIsTheDipole) {
 // they go negative.
 TEST(Multipole, ThinSlabsStayPhysical) {
     for (double d : {1e-9, 1e-4, 0.01, 0.1, 0.5, 0.9, 1.0, 2.0}) {
-        Slab s;
-        s.sigma_a = 0.01;
-        s.sigma_s = 1.0;
-        s.thickness = d;
+        Slab s{.sigma_a = 0.01, .sigma_s = 1.0, .thickness = d};
         const Multipole m = Multipole::converged(s, 1e-6);
         const double r = m.total_reflectance(), t = m.total_transmittance();
         EXPECT_TRUE(std::isfinite(r) && std::isfinite(t)) << d;
@@ -159,10 +153,7 @@ TEST(Multipole, ThinSlabsStayPhysical) {
             EXPECT_GE(m.transmittance(radius), 0.0) << d << " " << radius;
         }
     }
-    Slab thin;
-    thin.sigma_a = 0.01;
-    thin.sigma_s = 1.0;
-    thin.thickness = 0.5;
+    Slab thin{.sigma_a = 0.01, .sigma_s = 1.0, .thickness = 0.5};
     EXPECT_LT(Multipole::converged(thin, 1e-6, SourceDepth::MeanFreePath).total_transmittance(), 0.0);  // the paper's model
 }
 
@@ -170,10 +161,7 @@ TEST(Multipole, ThinSlabsStayPhysical) {
 TEST(Multipole, VanishingThickness) {
     double previous = INFINITY;
     for (double d = 1.0; d > 1e-12; d /= 10.0) {
-        Slab s;
-        s.sigma_a = 0.1;
-        s.sigma_s = 2.0;
-        s.thickness = d;
+        Slab s{.sigma_a = 0.1, .sigma_s = 2.0, .thickness = d};
         const double r = Multipole::converged(s, 1e-6).total_reflectance();
         EXPECT_LT(r, previous);
         EXPECT_GE(r, 0.0);
@@ -188,10 +176,7 @@ TEST(Multipole, VanishingThickness) {
 TEST(Multipole, VanishingThicknessDiffuseSource) {
     double previous = INFINITY;
     for (double d = 1.0; d > 1e-18; d /= 10.0) {
-        Slab s;
-        s.sigma_a = 0.1;
-        s.sigma_s = 0.9;
-        s.thickness = d;
+        Slab s{.sigma_a = 0.1, .sigma_s = 0.9, .thickness = d};
         const Multipole m = Multipole::converged(s, 1e-6, SourceDepth::DiffuseFirstScatter);
         const double r = m.total_reflectance(), t = m.total_transmittance();
         EXPECT_TRUE(std::isfinite(r) && std::isfinite(t)) << d;
@@ -206,10 +191,7 @@ TEST(Multipole, VanishingThicknessDiffuseSource) {
 // totals come from its limit; with albedo 1 and matched indices all light
 // leaves, and the limit joins the absorbing case continuously.
 TEST(Multipole, AbsorptionFree) {
-    Slab s;
-    s.sigma_a = 0.0;
-    s.sigma_s = 1.0;
-    s.thickness = 2.0;
+    Slab s{.sigma_a = 0.0, .sigma_s = 1.0, .thickness = 2.0};
     const Multipole m = Multipole::converged(s, 1e-6);
     const double direct = std::exp(-2.0);
     EXPECT_NEAR(m.total_reflectance() + m.total_transmittance() + direct, 1.0, 1e-12);
