@@ -2,7 +2,8 @@
 #include "app/backends.h"
 
 #include "app/provenance.h"
-#include "glsl/gl_renderer.h"
+#include "gl/gl_renderer.h"
+#include "kernels/registry.h"
 #include "raster/cpu_renderer.h"
 
 namespace st {
@@ -13,7 +14,7 @@ Backends::Backends(int threads, std::string glsl_dir) : threads_(threads), glsl_
 Backends::~Backends() = default;
 
 CpuRenderer& Backends::cpu() {
-    if (!cpu_) cpu_ = std::make_unique<CpuRenderer>(threads_);
+    if (!cpu_) cpu_ = std::make_unique<CpuRenderer>(threads_, builtin_twins());
     return *cpu_;
 }
 

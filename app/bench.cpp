@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "glsl/gl_renderer.h"
+#include "gl/gl_renderer.h"
 #include "raster/cpu_renderer.h"
 
 namespace st {

@@ -9,7 +9,7 @@
 
 #include "kernels/registry.h"
 #include "raster/cpu_renderer.h"
-#include "raster/sampler2d.h"
+#include "texture/sampler2d.h"
 #include "scene/scene.h"
 
 namespace st {
@@ -93,7 +93,7 @@ void BM_FragmentTwin(benchmark::State& state, std::string name) {
 
 void BM_CpuFrame(benchmark::State& state, std::string scene_name, int threads) {
     const Scene scene = load_scene(scene_name, {});
-    CpuRenderer cpu(threads);
+    CpuRenderer cpu(threads, builtin_twins());
     cpu.prepare(scene.frame);
     for (auto _ : state) cpu.execute();
     const auto& pass = scene.frame.passes.back();

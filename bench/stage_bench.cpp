@@ -7,11 +7,11 @@
 #include <benchmark/benchmark.h>
 
 #include "frame/frame.h"
-#include "kernels/program.h"
+#include "shading/program.h"
 #include "raster/attribute_setup.h"
 #include "raster/fragment_inputs.h"
 #include "raster/output_merge.h"
-#include "raster/sampler2d.h"
+#include "texture/sampler2d.h"
 #include "raster/tile_raster.h"
 #include "raster/triangle_setup.h"
 #include "raster/viewport.h"

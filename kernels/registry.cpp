@@ -5,11 +5,11 @@
 #include <functional>
 #include <map>
 
-#include "kernels/background.h"
-#include "kernels/coverage.h"
-#include "kernels/interp.h"
-#include "kernels/textured.h"
-#include "kernels/thin_slab.h"
+#include "kernels/thin_slab/background.h"
+#include "kernels/harness/coverage.h"
+#include "kernels/triangles/interp.h"
+#include "kernels/triangles/textured.h"
+#include "kernels/thin_slab/thin_slab.h"
 
 namespace st {
 
@@ -56,7 +56,24 @@ std::vector<std::string> names(const std::map<std::string, Factory<T>>& table) {
     return out;
 }
 
+class BuiltinTwins final : public TwinLibrary {
+public:
+    std::unique_ptr<VertexTwin> make_vertex(const std::string& name) const override {
+        return make(vertex_twins(), name);
+    }
+    std::unique_ptr<FragmentTwin> make_fragment(const std::string& name) const override {
+        return make(fragment_twins(), name);
+    }
+    std::vector<std::string> vertex_names() const override { return names(vertex_twins()); }
+    std::vector<std::string> fragment_names() const override { return names(fragment_twins()); }
+};
+
 }  // namespace
+
+const TwinLibrary& builtin_twins() {
+    static const BuiltinTwins library;
+    return library;
+}
 
 std::unique_ptr<VertexTwin> make_vertex_twin(const std::string& name) {
     return make(vertex_twins(), name);

@@ -2,9 +2,9 @@
 // function of the GLSL has a twin function of the same name, in the same
 // order, and every registered twin has its GLSL file.
 //
-// Naming: glsl/<stem>.vert -> kernels/<stem>_vert.cpp, glsl/<stem>.frag ->
-// kernels/<stem>_frag.cpp, glsl/<stem>.glsl (included model code) ->
-// kernels/<stem>.cpp. A shader's main() is the twin's run() (vertex) or
+// Naming: glsl/<technique>/<stem>.vert -> kernels/<technique>/<stem>_vert.cpp,
+// .frag -> <stem>_frag.cpp, .glsl (included model code) -> <stem>.cpp. The
+// "Twin:" line of each shader's opening comment names that file. A shader's main() is the twin's run() (vertex) or
 // main() (fragment).
 #include <algorithm>
 #include <filesystem>
@@ -49,12 +49,13 @@ fs::path twin_of(const fs::path& glsl) {
     const std::string ext = glsl.extension().string();
     const std::string stem = glsl.stem().string();
     const std::string name = ext == ".glsl" ? stem : stem + "_" + ext.substr(1);
-    return fs::path(SHADERTWIN_SOURCE_DIR) / "kernels" / (name + ".cpp");
+    const fs::path technique = glsl.parent_path().filename();
+    return fs::path(SHADERTWIN_SOURCE_DIR) / "kernels" / technique / (name + ".cpp");
 }
 
 std::vector<fs::path> glsl_files() {
     std::vector<fs::path> files;
-    for (const auto& e : fs::directory_iterator(fs::path(SHADERTWIN_SOURCE_DIR) / "glsl")) {
+    for (const auto& e : fs::recursive_directory_iterator(fs::path(SHADERTWIN_SOURCE_DIR) / "glsl")) {
         const auto ext = e.path().extension();
         if (ext == ".vert" || ext == ".frag" || ext == ".glsl") files.push_back(e.path());
     }
@@ -89,11 +90,25 @@ TEST(Twins, EveryShaderFunctionHasItsTwinInOrder) {
 }
 
 TEST(Twins, EveryRegisteredTwinHasItsShader) {
-    const fs::path dir = fs::path(SHADERTWIN_SOURCE_DIR) / "glsl";
-    for (const auto& name : vertex_twin_names())
-        EXPECT_TRUE(fs::exists(dir / (name + ".vert"))) << "vertex twin " << name;
-    for (const auto& name : fragment_twin_names())
-        EXPECT_TRUE(fs::exists(dir / (name + ".frag"))) << "fragment twin " << name;
+    std::vector<std::string> shaders;
+    for (const fs::path& glsl : glsl_files()) shaders.push_back(glsl.filename().string());
+    auto has = [&](const std::string& file) { return std::count(shaders.begin(), shaders.end(), file) == 1; };
+    for (const auto& name : vertex_twin_names()) EXPECT_TRUE(has(name + ".vert")) << "vertex twin " << name;
+    for (const auto& name : fragment_twin_names()) EXPECT_TRUE(has(name + ".frag")) << "fragment twin " << name;
+}
+
+// Every "Twin: path" in a shader names a file that exists, and it is the
+// file the naming rule above gives.
+TEST(Twins, EveryTwinPointerNamesItsFile) {
+    static const std::regex pointer(R"(Twin:\s+(kernels/[\w/]+\.(?:cpp|h)))");
+    const fs::path root(SHADERTWIN_SOURCE_DIR);
+    for (const fs::path& glsl : glsl_files()) {
+        const std::string source = read(glsl);
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(source, m, pointer)) << glsl << " has no 'Twin: kernels/...' line";
+        EXPECT_TRUE(fs::exists(root / m[1].str())) << glsl << " points at missing " << m[1];
+        EXPECT_EQ(root / m[1].str(), twin_of(glsl)) << glsl << " points at another twin";
+    }
 }
 
 }  // namespace st

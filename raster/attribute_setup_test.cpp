@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "kernels/program.h"
+#include "shading/program.h"
 #include "raster/fragment_inputs.h"
 
 namespace st {

@@ -13,7 +13,7 @@
 
 #include <vector>
 
-#include "kernels/program.h"
+#include "shading/program.h"
 #include "raster/viewport.h"
 
 namespace st {

@@ -5,17 +5,17 @@
 #include <deque>
 #include <stdexcept>
 
-#include "kernels/registry.h"
 #include "raster/clipper.h"
 #include "raster/float_env.h"
 #include "raster/fragment_inputs.h"
 #include "raster/framebuffer.h"
 #include "raster/output_merge.h"
-#include "raster/sampler2d.h"
+#include "texture/sampler2d.h"
 #include "raster/tile_raster.h"
 #include "raster/triangle_setup.h"
 #include "raster/viewport.h"
 #include "raster/worker_pool.h"
+#include "shading/twin_library.h"
 
 namespace st {
 
@@ -67,7 +67,7 @@ struct CpuRenderer::Impl {
                     Framebuffer& fb);
 };
 
-CpuRenderer::CpuRenderer(int threads) {
+CpuRenderer::CpuRenderer(int threads, const TwinLibrary& twins) : twins_(twins) {
     if (threads < 1) throw std::invalid_argument("thread count must be at least 1");
     impl_ = std::make_unique<Impl>(threads);
 }
@@ -85,9 +85,9 @@ void CpuRenderer::prepare(const Frame& frame) {
             PreparedDraw& d = draws.emplace_back();
             d.call = &call;
             d.vertices = call.vertices;
-            d.vertex = make_vertex_twin(call.vertex);
+            d.vertex = twins_.make_vertex(call.vertex);
             if (!d.vertex) throw std::runtime_error("no C++ twin for vertex program '" + call.vertex + "'");
-            d.fragment = make_fragment_twin(call.fragment);
+            d.fragment = twins_.make_fragment(call.fragment);
             if (!d.fragment)
                 throw std::runtime_error("no C++ twin for fragment program '" + call.fragment + "'");
             d.bindings.uniforms = &call.uniforms;

@@ -18,9 +18,13 @@
 
 namespace st {
 
+class TwinLibrary;
+
 class CpuRenderer {
 public:
-    explicit CpuRenderer(int threads);
+    // `twins` resolves the program names of each draw; it must outlive the
+    // renderer (kernels/registry.h has the built-in one).
+    CpuRenderer(int threads, const TwinLibrary& twins);
     ~CpuRenderer();
 
     // Resolves twins and builds samplers. Throws std::runtime_error naming
@@ -41,6 +45,7 @@ public:
 
 private:
     struct Impl;
+    const TwinLibrary& twins_;
     std::unique_ptr<Impl> impl_;
     StageTimes times_;
 };

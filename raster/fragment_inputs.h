@@ -4,7 +4,7 @@
 // screen, w = 1 / (1/w) per pixel, varying = numerator * w.
 #pragma once
 
-#include "kernels/program.h"
+#include "shading/program.h"
 #include "raster/plane.h"
 #include "raster/tile_raster.h"
 

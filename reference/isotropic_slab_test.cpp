@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "kernels/thin_slab_model.h"
+#include "kernels/thin_slab/thin_slab_model.h"
 
 namespace st {
 
@@ -32,7 +32,9 @@ TEST(IsotropicSlab, ReproducesPublishedExactValues) {
         EXPECT_NEAR(f.transmittance, c.t, 2e-5) << c.tau1 << " " << c.albedo;
         EXPECT_NEAR(f.direct, std::exp(-c.tau1), 1e-15);
         // Energy: with albedo 1 nothing is absorbed.
-        if (c.albedo == 1.0) EXPECT_NEAR(f.reflectance + f.transmittance + f.direct, 1.0, 5e-5);
+        if (c.albedo == 1.0) {
+            EXPECT_NEAR(f.reflectance + f.transmittance + f.direct, 1.0, 5e-5);
+        }
     }
 }
 

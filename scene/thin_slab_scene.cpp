@@ -12,8 +12,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "kernels/glsl_math.h"
-#include "kernels/thin_slab_model.h"
+#include "shading/glsl_math.h"
+#include "kernels/thin_slab/thin_slab_model.h"
 #include "scene/input_error.h"
 #include "scene/scene_kinds.h"
 #include "scene/thin_slab_textures.h"

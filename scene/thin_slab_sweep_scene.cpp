@@ -1,6 +1,6 @@
 // thin_slab_sweep_scene.cpp: the "thin-slab-sweep" kind. One pixel per
 // sample of thin_slab_sweep_rows(): the inputs go in an RGBA32F texture read
-// with texelFetch, and glsl/thin_slab_sweep.frag writes the model's outputs,
+// with texelFetch, and glsl/thin_slab/thin_slab_sweep.frag writes the model's outputs,
 // so both backends evaluate exactly the same inputs.
 #include "scene/input_error.h"
 #include "scene/scene_kinds.h"

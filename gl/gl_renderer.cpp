@@ -1,0 +1,315 @@
+// gl_renderer.cpp: Frame -> GL objects -> draws -> float read-back.
+//
+// Mirrors raster/cpu_renderer.cpp step for step: same targets (RGBA32F and
+// 32-bit float depth), same clear, same draw order, same blend and depth
+// state. Anything set here that changes pixels must be set there too.
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include "gl/gl_renderer.h"
+#include "gl/shader_files.h"
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace st {
+
+namespace {
+
+// Reads a shader and splices in `#include "file"` lines (paths relative to
+// the including file), so programs can share model code the way their twins
+// share C++ functions. The #line directives keep GL log line numbers
+// meaningful: the second number is the source-string index, and the log's
+// file is named in our error message.
+std::string read_source(const std::string& path, int depth = 0) {
+    if (depth > 8) throw std::runtime_error(path + ": #include nested too deeply");
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error("cannot read shader " + path);
+    const std::string dir = path.substr(0, path.find_last_of('/') + 1);
+    std::string out, line;
+    int number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        const auto first = line.find_first_not_of(" \t");
+        if (first != std::string::npos && line.compare(first, 8, "#include") == 0) {
+            const auto open = line.find('"'), close = line.rfind('"');
+            if (open == std::string::npos || close <= open)
+                throw std::runtime_error(path + ":" + std::to_string(number) + ": malformed #include");
+            out += read_source(dir + line.substr(open + 1, close - open - 1), depth + 1);
+            out += "#line " + std::to_string(number + 1) + "\n";
+            continue;
+        }
+        out += line + "\n";
+    }
+    return out;
+}
+
+GLuint compile(GLenum type, const std::string& path) {
+    const std::string source = read_source(path);
+    GLuint shader = glCreateShader(type);
+    const char* text = source.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[4096] = {};
+        glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+        glDeleteShader(shader);
+        throw std::runtime_error(path + ": GLSL compile failed\n" + log);
+    }
+    return shader;
+}
+
+GLuint link(const std::string& vert_path, const std::string& frag_path) {
+    GLuint vs = compile(GL_VERTEX_SHADER, vert_path);
+    GLuint fs = 0;
+    try {
+        fs = compile(GL_FRAGMENT_SHADER, frag_path);
+    } catch (...) {
+        glDeleteShader(vs);
+        throw;
+    }
+    GLuint program = glCreateProgram();
+    glAttachShader(program, vs);
+    glAttachShader(program, fs);
+    glLinkProgram(program);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = 0;
+    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[4096] = {};
+        glGetProgramInfoLog(program, sizeof log, nullptr, log);
+        glDeleteProgram(program);
+        throw std::runtime_error(vert_path + " + " + frag_path + ": GLSL link failed\n" + log);
+    }
+    return program;
+}
+
+GLint gl_wrap(TextureWrap w) { return w == TextureWrap::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE; }
+GLint gl_filter(TextureFilter f) { return f == TextureFilter::Linear ? GL_LINEAR : GL_NEAREST; }
+
+void set_uniform(GLuint program, const Uniform& u) {
+    const GLint loc = glGetUniformLocation(program, u.name.c_str());
+    if (loc < 0) return;  // not used by this program (or optimised away)
+    const float* v = u.value.data();
+    switch (u.type) {
+        case UniformType::Float: glUniform1f(loc, v[0]); break;
+        case UniformType::Vec2: glUniform2f(loc, v[0], v[1]); break;
+        case UniformType::Vec3: glUniform3f(loc, v[0], v[1], v[2]); break;
+        case UniformType::Vec4: glUniform4f(loc, v[0], v[1], v[2], v[3]); break;
+        case UniformType::Int: glUniform1i(loc, int(v[0])); break;
+        case UniformType::Mat4: glUniformMatrix4fv(loc, 1, GL_FALSE, v); break;
+    }
+}
+
+}  // namespace
+
+struct GlRenderer::State {
+    struct Draw {
+        GLuint program = 0, vao = 0, vbo = 0, ebo = 0;
+        GLsizei index_count = 0;
+        std::vector<GLuint> textures;
+        DrawState state;
+        std::shared_ptr<const HostStage> host_stage;
+        VertexArray vertices;  // kept only when a host stage rewrites them per frame
+    };
+    struct Target {
+        GLuint fbo = 0, colour = 0, depth = 0;
+        int width = 0, height = 0;
+        glm::vec4 clear_colour;
+        float clear_depth = 1.0f;
+        std::vector<Draw> draws;
+    };
+    std::map<std::pair<std::string, std::string>, GLuint> programs;  // kept across frames
+    std::vector<Target> passes;
+
+    void release_passes() {
+        for (Target& t : passes) {
+            for (Draw& d : t.draws) {
+                glDeleteVertexArrays(1, &d.vao);
+                glDeleteBuffers(1, &d.vbo);
+                glDeleteBuffers(1, &d.ebo);
+                glDeleteTextures(GLsizei(d.textures.size()), d.textures.data());
+            }
+            glDeleteFramebuffers(1, &t.fbo);
+            glDeleteTextures(1, &t.colour);
+            glDeleteRenderbuffers(1, &t.depth);
+        }
+        passes.clear();
+    }
+};
+
+GlRenderer::GlRenderer(std::string glsl_dir)
+    : shaders_(std::make_unique<ShaderFiles>(glsl_dir)), context_(make_osmesa_context()), state_(new State) {}
+
+GlRenderer::~GlRenderer() {
+    context_->make_current();
+    state_->release_passes();
+    for (auto& [key, program] : state_->programs) glDeleteProgram(program);
+}
+
+std::string GlRenderer::renderer() const { return context_->renderer(); }
+std::string GlRenderer::version() const { return context_->version(); }
+
+void GlRenderer::prepare(const Frame& frame) {
+    context_->make_current();
+    state_->release_passes();
+    for (const Pass& pass : frame.passes) {
+        State::Target t;
+        t.width = pass.width;
+        t.height = pass.height;
+        t.clear_colour = pass.clear_colour;
+        t.clear_depth = pass.clear_depth;
+        glGenTextures(1, &t.colour);
+        glBindTexture(GL_TEXTURE_2D, t.colour);
+        glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, t.width, t.height);
+        glGenRenderbuffers(1, &t.depth);
+        glBindRenderbuffer(GL_RENDERBUFFER, t.depth);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, t.width, t.height);
+        glGenFramebuffers(1, &t.fbo);
+        glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.colour, 0);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw std::runtime_error("GL: incomplete framebuffer " + std::to_string(t.width) + "x" +
+                                     std::to_string(t.height));
+
+        for (const DrawCall& dc : pass.draws) {
+            auto key = std::make_pair(dc.vertex, dc.fragment);
+            auto it = state_->programs.find(key);
+            if (it == state_->programs.end())
+                it = state_->programs
+                         .emplace(key, link(shaders_->path(dc.vertex, ".vert"),
+                                            shaders_->path(dc.fragment, ".frag")))
+                         .first;
+            State::Draw d;
+            d.program = it->second;
+            d.state = dc.state;
+            if (dc.host_stage) {
+                d.host_stage = dc.host_stage;
+                d.vertices = dc.vertices;
+            }
+            d.index_count = GLsizei(dc.indices.size());
+            glGenVertexArrays(1, &d.vao);
+            glBindVertexArray(d.vao);
+            glGenBuffers(1, &d.vbo);
+            glBindBuffer(GL_ARRAY_BUFFER, d.vbo);
+            glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(dc.vertices.data.size() * sizeof(glm::vec4)),
+                         dc.vertices.data.data(), GL_STATIC_DRAW);
+            const GLsizei stride = GLsizei(dc.vertices.attribute_count * sizeof(glm::vec4));
+            for (int a = 0; a < dc.vertices.attribute_count; ++a) {
+                glEnableVertexAttribArray(GLuint(a));
+                glVertexAttribPointer(GLuint(a), 4, GL_FLOAT, GL_FALSE, stride,
+                                      reinterpret_cast<const void*>(size_t(a) * sizeof(glm::vec4)));
+            }
+            glGenBuffers(1, &d.ebo);
+            glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d.ebo);
+            glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(dc.indices.size() * sizeof(uint32_t)),
+                         dc.indices.data(), GL_STATIC_DRAW);
+            glBindVertexArray(0);
+
+            glUseProgram(d.program);
+            for (const Uniform& u : dc.uniforms) set_uniform(d.program, u);
+            for (size_t unit = 0; unit < dc.textures.size(); ++unit) {
+                const Texture& tex = dc.textures[unit];
+                GLuint name = 0;
+                glGenTextures(1, &name);
+                glBindTexture(GL_TEXTURE_2D, name);
+                glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+                if (tex.format == TextureFormat::RGBA8) {
+                    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, tex.width, tex.height);
+                    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, tex.width, tex.height, GL_RGBA,
+                                    GL_UNSIGNED_BYTE, tex.texels8.data());
+                } else {
+                    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, tex.width, tex.height);
+                    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, tex.width, tex.height, GL_RGBA,
+                                    GL_FLOAT, tex.texels32.data());
+                }
+                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, gl_filter(tex.filter));
+                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, gl_filter(tex.filter));
+                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap));
+                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap));
+                const GLint loc = glGetUniformLocation(d.program, tex.sampler.c_str());
+                if (loc >= 0) glUniform1i(loc, GLint(unit));
+                d.textures.push_back(name);
+            }
+            t.draws.push_back(std::move(d));
+        }
+        state_->passes.push_back(std::move(t));
+    }
+    if (GLenum err = glGetError(); err != GL_NO_ERROR)
+        throw std::runtime_error("GL error " + std::to_string(err) + " while preparing the frame");
+}
+
+void GlRenderer::execute() {
+    context_->make_current();
+    glDisable(GL_DITHER);
+    glDisable(GL_CULL_FACE);
+    for (State::Target& t : state_->passes) {
+        glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
+        glViewport(0, 0, t.width, t.height);
+        glDepthMask(GL_TRUE);
+        glClearColor(t.clear_colour.r, t.clear_colour.g, t.clear_colour.b, t.clear_colour.a);
+        glClearDepth(t.clear_depth);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        for (State::Draw& d : t.draws) {
+            if (d.state.depth_test) {
+                glEnable(GL_DEPTH_TEST);
+                glDepthFunc(GL_LESS);
+            } else {
+                glDisable(GL_DEPTH_TEST);
+            }
+            glDepthMask(d.state.depth_write ? GL_TRUE : GL_FALSE);
+            switch (d.state.blend) {
+                case BlendMode::None: glDisable(GL_BLEND); break;
+                case BlendMode::OneSrcAlpha:
+                    glEnable(GL_BLEND);
+                    glBlendFunc(GL_ONE, GL_SRC_ALPHA);
+                    break;
+                case BlendMode::SrcAlphaOneMinusSrcAlpha:
+                    glEnable(GL_BLEND);
+                    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                    break;
+            }
+            if (d.host_stage) {
+                // The host's per-frame work and its upload belong to the frame.
+                d.host_stage->run(d.vertices);
+                glBindBuffer(GL_ARRAY_BUFFER, d.vbo);
+                glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(d.vertices.data.size() * sizeof(glm::vec4)),
+                                d.vertices.data.data());
+            }
+            glUseProgram(d.program);
+            for (size_t unit = 0; unit < d.textures.size(); ++unit) {
+                glActiveTexture(GLenum(GL_TEXTURE0 + unit));
+                glBindTexture(GL_TEXTURE_2D, d.textures[unit]);
+            }
+            glBindVertexArray(d.vao);
+            glDrawElements(GL_TRIANGLES, d.index_count, GL_UNSIGNED_INT, nullptr);
+        }
+    }
+    glFinish();
+    if (GLenum err = glGetError(); err != GL_NO_ERROR)
+        throw std::runtime_error("GL error " + std::to_string(err) + " while drawing");
+}
+
+Image GlRenderer::read_back() {
+    context_->make_current();
+    if (state_->passes.empty()) throw std::runtime_error("GL: nothing rendered");
+    const State::Target& t = state_->passes.back();
+    Image bottom_up(t.width, t.height);
+    glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, t.width, t.height, GL_RGBA, GL_FLOAT, bottom_up.rgba.data());
+    Image image(t.width, t.height);
+    for (int y = 0; y < t.height; ++y)
+        std::copy_n(bottom_up.pixel(0, t.height - 1 - y), size_t(t.width) * 4, image.pixel(0, y));
+    return image;
+}
+
+}  // namespace st

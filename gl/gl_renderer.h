@@ -1,0 +1,46 @@
+// gl_renderer.h: the reference backend. Runs a Frame through the real GLSL
+// on a GL context (llvmpipe), into RGBA32F framebuffer objects.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "frame/frame.h"
+#include "gl/gl_context.h"
+#include "image/image.h"
+
+namespace st {
+
+class ShaderFiles;
+
+class GlRenderer {
+public:
+    // `glsl_dir` holds <technique>/<name>.vert|.frag. Creates the context.
+    explicit GlRenderer(std::string glsl_dir);
+    ~GlRenderer();
+
+    // Compiles programs, uploads geometry and textures, creates targets.
+    // Throws std::runtime_error (first line says what, then the GL log).
+    void prepare(const Frame& frame);
+    // Issues every pass's draws and waits for them (glFinish).
+    void execute();
+    // The last pass's colour target, rows top to bottom.
+    Image read_back();
+
+    Image render(const Frame& frame) {
+        prepare(frame);
+        execute();
+        return read_back();
+    }
+
+    std::string renderer() const;
+    std::string version() const;
+
+private:
+    struct State;
+    std::unique_ptr<ShaderFiles> shaders_;
+    std::unique_ptr<GlContext> context_;
+    std::unique_ptr<State> state_;
+};
+
+}  // namespace st

@@ -1,9 +1,0 @@
-#version 450 core
-// interp.frag: writes the interpolated vertex colour.
-// Twin: kernels/interp.cpp (InterpFragment::main).
-layout(location = 0) in vec4 v_colour;
-layout(location = 0) out vec4 frag_colour;
-
-void main() {
-    frag_colour = v_colour;
-}

@@ -1,0 +1,25 @@
+// background.h: twin of glsl/background.vert and glsl/background.frag.
+#pragma once
+
+#include "shading/program.h"
+
+namespace st {
+
+class Sampler2D;
+
+class BackgroundVertex final : public VertexTwin {
+public:
+    int varying_count() const override { return 1; }
+    void run(const glm::vec4* attributes, VertexOut& out) const override;
+};
+
+class BackgroundFragment final : public ScalarFragmentTwin<BackgroundFragment> {
+public:
+    void bind(const Bindings& b) override { painting_ = &b.sampler("painting"); }
+    glm::vec4 main(const Fragment& frag) const;
+
+private:
+    const Sampler2D* painting_ = nullptr;
+};
+
+}  // namespace st

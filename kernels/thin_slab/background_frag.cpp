@@ -1,0 +1,15 @@
+// background_frag.cpp: twin of glsl/background.frag, line for line.
+#include "kernels/thin_slab/background.h"
+#include "texture/sampler2d.h"
+
+namespace st {
+
+namespace {
+constexpr int v_uv = 0;  // inputs
+}  // namespace
+
+glm::vec4 BackgroundFragment::main(const Fragment& frag) const {
+    return painting_->sample(glm::vec2(frag.varying(v_uv)));
+}
+
+}  // namespace st

@@ -1,0 +1,16 @@
+// textured_frag.cpp: twin of glsl/textured.frag, line for line.
+#include "kernels/triangles/textured.h"
+
+#include "texture/sampler2d.h"
+
+namespace st {
+
+namespace {
+constexpr int v_colour = 0, v_uv = 1;  // inputs
+}  // namespace
+
+glm::vec4 TexturedFragment::main(const Fragment& frag) const {
+    return frag.varying(v_colour) * tex_->sample(glm::vec2(frag.varying(v_uv)));
+}
+
+}  // namespace st

@@ -1,0 +1,63 @@
+// program.cpp: uniform look-up and quad derivatives for twins.
+#include "shading/program.h"
+
+#include <stdexcept>
+
+namespace st {
+
+namespace {
+
+const Uniform& find(const std::vector<Uniform>* uniforms, const std::string& name, UniformType type) {
+    if (uniforms)
+        for (const Uniform& u : *uniforms)
+            if (u.name == name) {
+                if (u.type != type) throw std::runtime_error("uniform '" + name + "' has the wrong type");
+                return u;
+            }
+    throw std::runtime_error("uniform '" + name + "' is not set");
+}
+
+}  // namespace
+
+float Bindings::get_float(const std::string& name) const {
+    return find(uniforms, name, UniformType::Float).value[0];
+}
+
+glm::vec3 Bindings::get_vec3(const std::string& name) const {
+    const auto& v = find(uniforms, name, UniformType::Vec3).value;
+    return glm::vec3(v[0], v[1], v[2]);
+}
+
+glm::mat4 Bindings::get_mat4(const std::string& name) const {
+    const auto& v = find(uniforms, name, UniformType::Mat4).value;
+    glm::mat4 m;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) m[c][r] = v[size_t(c * 4 + r)];
+    return m;
+}
+
+glm::vec4 Bindings::get_vec4(const std::string& name) const {
+    const auto& v = find(uniforms, name, UniformType::Vec4).value;
+    return glm::vec4(v[0], v[1], v[2], v[3]);
+}
+
+const Sampler2D& Bindings::sampler(const std::string& name) const {
+    for (size_t i = 0; i < sampler_names.size(); ++i)
+        if (sampler_names[i] == name) return *samplers[i];
+    throw std::runtime_error("sampler '" + name + "' is not bound");
+}
+
+// Lanes: 0 = (x, y), 1 = (x+1, y), 2 = (x, y+1), 3 = (x+1, y+1). The
+// difference is taken within the lane's own row (or column), which is what
+// llvmpipe computes for both dFdxFine and dFdxCoarse.
+glm::vec4 Fragment::dFdx(int slot) const {
+    const int row = lane_ & 2;
+    return quad_.varyings[slot][row + 1] - quad_.varyings[slot][row];
+}
+
+glm::vec4 Fragment::dFdy(int slot) const {
+    const int column = lane_ & 1;
+    return quad_.varyings[slot][column + 2] - quad_.varyings[slot][column];
+}
+
+}  // namespace st

@@ -1,0 +1,122 @@
+// sampler2d_test.cpp: filtering and wrapping, against values worked out by
+// hand. (The live comparisons with llvmpipe are the triangles-texture-*
+// scenes, run by the cli.compare_builtin test.)
+#include "texture/sampler2d.h"
+
+#include <gtest/gtest.h>
+
+namespace st {
+
+namespace {
+
+Texture ramp(TextureFormat format, TextureFilter filter, TextureWrap wrap, int w, int h) {
+    Texture t;
+    t.format = format;
+    t.filter = filter;
+    t.wrap = wrap;
+    t.width = w;
+    t.height = h;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int c = 0; c < 4; ++c) {
+                const int v = (x * 40 + y * 7 + c) % 256;  // distinct per texel
+                if (format == TextureFormat::RGBA8) t.texels8.push_back(uint8_t(v));
+                else t.texels32.push_back(float(v) / 256.0f);
+            }
+    return t;
+}
+
+glm::vec2 centre(int x, int y, const Texture& t) {
+    return {(float(x) + 0.5f) / float(t.width), (float(y) + 0.5f) / float(t.height)};
+}
+
+}  // namespace
+
+class FilterTest : public ::testing::TestWithParam<std::tuple<TextureFormat, TextureWrap, int>> {};
+
+// Coordinates (x + 0.5) / w are exact in float only for power-of-two w;
+// otherwise s * w - 0.5 lands a few ulps off the texel centre and the weight
+// of the neighbour is ~1e-7 instead of 0.
+float coordinate_rounding(int w) { return (w & (w - 1)) == 0 ? 0.0f : 1e-6f; }
+
+// At a texel centre, linear filtering returns that texel.
+TEST_P(FilterTest, TexelCentres) {
+    const auto [format, wrap, w] = GetParam();
+    const Texture t = ramp(format, TextureFilter::Linear, wrap, w, 4);
+    const Sampler2D s(t);
+    for (int y = 0; y < t.height; ++y)
+        for (int x = 0; x < t.width; ++x) {
+            const glm::vec4 got = s.sample(centre(x, y, t)), want = s.fetch(x, y);
+            for (int c = 0; c < 4; ++c) EXPECT_NEAR(got[c], want[c], coordinate_rounding(w)) << x << "," << y;
+        }
+}
+
+// Halfway between two texel centres gives their mean (within 8-bit
+// rounding for the fixed-point path).
+TEST_P(FilterTest, HalfwayIsTheMean) {
+    const auto [format, wrap, w] = GetParam();
+    const Texture t = ramp(format, TextureFilter::Linear, wrap, w, 4);
+    const Sampler2D s(t);
+    const glm::vec2 st{2.0f / float(t.width), 0.5f / float(t.height)};  // between texels 1 and 2 of row 0
+    const glm::vec4 expected = (s.fetch(1, 0) + s.fetch(2, 0)) * 0.5f;
+    const float tolerance = format == TextureFormat::RGBA8 ? 0.5f / 255.0f + 1e-6f : 0.0f;
+    const glm::vec4 got = s.sample(st);
+    for (int c = 0; c < 4; ++c) EXPECT_NEAR(got[c], expected[c], tolerance) << c;
+}
+
+// Outside [0, 1]: repeat wraps by one period, clamp holds the edge texel.
+TEST_P(FilterTest, WrapModes) {
+    const auto [format, wrap, w] = GetParam();
+    const Texture t = ramp(format, TextureFilter::Linear, wrap, w, 4);
+    const Sampler2D s(t);
+    const glm::vec2 inside = centre(1, 2, t);
+    if (wrap == TextureWrap::Repeat) {
+        for (glm::vec2 shift : {glm::vec2(1.0f, 0.0f), glm::vec2(-2.0f, 1.0f)}) {
+            const glm::vec4 a = s.sample(inside + shift), b = s.sample(inside);
+            for (int c = 0; c < 4; ++c) EXPECT_NEAR(a[c], b[c], coordinate_rounding(w)) << c;
+        }
+        // Between the last and the first texel, across the seam.
+        const glm::vec4 seam = s.sample({0.0f, inside.y});
+        const glm::vec4 mean = (s.fetch(0, 2) + s.fetch(t.width - 1, 2)) * 0.5f;
+        for (int c = 0; c < 4; ++c) EXPECT_NEAR(seam[c], mean[c], 1.0f / 255.0f) << c;
+    } else {
+        EXPECT_EQ(s.sample({-3.0f, inside.y}), s.fetch(0, 2));
+        EXPECT_EQ(s.sample({7.5f, inside.y}), s.fetch(t.width - 1, 2));
+        EXPECT_EQ(s.sample({0.0f, inside.y}), s.fetch(0, 2));
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    FormatsWrapsSizes, FilterTest,
+    ::testing::Combine(::testing::Values(TextureFormat::RGBA8, TextureFormat::RGBA32F),
+                       ::testing::Values(TextureWrap::Repeat, TextureWrap::ClampToEdge),
+                       ::testing::Values(8, 13)));  // power of two and not
+
+TEST(Nearest, PicksTheTexelUnderTheCoordinate) {
+    for (TextureWrap wrap : {TextureWrap::Repeat, TextureWrap::ClampToEdge})
+        for (int w : {8, 13}) {
+            const Texture t = ramp(TextureFormat::RGBA32F, TextureFilter::Nearest, wrap, w, 3);
+            const Sampler2D s(t);
+            for (int x = 0; x < w; ++x) {
+                const float left = (float(x) + 0.01f) / float(w), right = (float(x) + 0.99f) / float(w);
+                EXPECT_EQ(s.sample({left, 0.5f}), s.fetch(x, 1));
+                EXPECT_EQ(s.sample({right, 0.5f}), s.fetch(x, 1));
+            }
+        }
+}
+
+// The 8-bit path quantises the weight to 1/256: a quarter of the way from 0
+// to 255 gives 64 (255 * 64/256 = 63.75, rounded), not a float 63.75/255.
+TEST(Unorm8Filter, WeightsAreQuantisedTo8Bits) {
+    Texture t;
+    t.format = TextureFormat::RGBA8;
+    t.wrap = TextureWrap::ClampToEdge;
+    t.width = 2;
+    t.height = 1;
+    t.texels8 = {0, 0, 0, 0, 255, 255, 255, 255};
+    const Sampler2D s(t);
+    const glm::vec4 v = s.sample({(0.5f + 0.25f) / 2.0f, 0.5f});
+    EXPECT_EQ(v.r, 64.0f * (1.0f / 255.0f));
+}
+
+}  // namespace st
