@@ -9,6 +9,7 @@
 
 #include "kernels/registry.h"
 #include "raster/cpu_renderer.h"
+#include "shading/block_layout.h"
 #include "texture/sampler2d.h"
 #include "scene/scene.h"
 
@@ -71,23 +72,30 @@ void BM_FragmentTwin(benchmark::State& state, std::string name) {
     fragment->bind(b->bindings);
     VertexOut tri[3];
     for (int k = 0; k < 3; ++k) vertex->run(b->draw->vertices.vertex(int(b->draw->indices[size_t(k)])), tri[k]);
-    std::vector<FragmentQuad> quads(256);
-    for (size_t q = 0; q < quads.size(); ++q)
-        for (int lane = 0; lane < 4; ++lane) {
-            const float a = float((q * 4 + size_t(lane)) % 97) / 97.0f, c = float(q % 13) / 26.0f;
+    std::vector<FragmentLanes> inputs(1024 / kLanes);
+    auto set = [](Vec4& v, int lane, const glm::vec4& x) {
+        v.x.set(lane, x.x);
+        v.y.set(lane, x.y);
+        v.z.set(lane, x.z);
+        v.w.set(lane, x.w);
+    };
+    for (size_t q = 0; q < inputs.size(); ++q)
+        for (int lane = 0; lane < kLanes; ++lane) {
+            const size_t i = q * kLanes + size_t(lane);
+            const float a = float(i % 97) / 97.0f, c = float(i / 4 % 13) / 26.0f;
             for (int s = 0; s < vertex->varying_count(); ++s)
-                quads[q].varyings[size_t(s)][size_t(lane)] =
-                    tri[0].varyings[size_t(s)] * (1 - a - c) + tri[1].varyings[size_t(s)] * a + tri[2].varyings[size_t(s)] * c;
-            quads[q].frag_coord[size_t(lane)] = glm::vec4(float(lane & 1) + 0.5f, float(lane >> 1) + 0.5f, 0.5f, 1.0f);
-            quads[q].coverage_mask = 0xf;
+                set(inputs[q].varyings[size_t(s)], lane,
+                    tri[0].varyings[size_t(s)] * (1 - a - c) + tri[1].varyings[size_t(s)] * a + tri[2].varyings[size_t(s)] * c);
+            set(inputs[q].frag_coord, lane, glm::vec4(float(block_lane_x(lane % 16)) + 0.5f, float(block_lane_y(lane % 16)) + 0.5f, 0.5f, 1.0f));
+            inputs[q].covered = Mask(true);
         }
-    FragmentOut out;
+    FragmentResult out;
     for (auto _ : state)
-        for (const auto& q : quads) {
-            fragment->shade(q, out);
+        for (const auto& in : inputs) {
+            fragment->shade(in, out);
             benchmark::DoNotOptimize(out);
         }
-    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(quads.size()) * 4);
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(inputs.size()) * kLanes);
     state.SetLabel("pixels, from " + b->scene.name);
 }
 

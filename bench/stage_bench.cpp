@@ -71,12 +71,12 @@ void BM_RasterizeTile(benchmark::State& state) {
     std::vector<Plane> planes;
     setup_triangle({WindowPos{0.3f, 0.2f, 0.5f, 1}, none}, {WindowPos{63.7f, 1.1f, 0.5f, 1}, none},
                    {WindowPos{2.2f, 63.9f, 0.5f, 1}, none}, 0, 64, 64, tri, planes);
-    std::vector<QuadCoverage> quads;
+    std::vector<BlockCoverage> blocks;
     long pixels = 0;
     for (auto _ : state) {
-        quads.clear();
-        rasterize_in_tile(tri, TileRect{0, 0, 64, 64}, quads);
-        benchmark::DoNotOptimize(quads.data());
+        blocks.clear();
+        rasterize_in_tile(tri, TileRect{0, 0, 64, 64}, blocks);
+        benchmark::DoNotOptimize(blocks.data());
         pixels += 64 * 64;
     }
     state.SetItemsProcessed(pixels);
@@ -84,19 +84,21 @@ void BM_RasterizeTile(benchmark::State& state) {
 }
 BENCHMARK(BM_RasterizeTile);
 
-// Perspective-correct interpolation of 3 varying slots for one quad.
-void BM_InterpolateQuad(benchmark::State& state) {
+// Perspective-correct interpolation of 3 varying slots for one whole 4x4
+// block (kBlockLanes / kLanes twin inputs).
+void BM_InterpolateBlock(benchmark::State& state) {
     std::vector<Plane> planes(2 + 12, Plane{0.5f, 0.01f, 0.02f});
-    FragmentQuad quad;
-    QuadCoverage q{100, 200, 0xf};
-    for (auto _ : state) {
-        interpolate_quad(planes.data(), 3, q, true, quad);
-        benchmark::DoNotOptimize(quad);
-    }
-    state.SetItemsProcessed(int64_t(state.iterations()) * 4);
+    FragmentLanes lanes;
+    const BlockCoverage block{100, 200, 0xffff};
+    for (auto _ : state)
+        for (int part = 0; part < kBlockLanes / kLanes; ++part) {
+            interpolate_lanes(planes.data(), 3, block, part, true, lanes);
+            benchmark::DoNotOptimize(lanes);
+        }
+    state.SetItemsProcessed(int64_t(state.iterations()) * kBlockLanes);
     state.SetLabel("pixels");
 }
-BENCHMARK(BM_InterpolateQuad);
+BENCHMARK(BM_InterpolateBlock);
 
 void BM_BlendOneSrcAlpha(benchmark::State& state) {
     std::vector<glm::vec4> dst(4096, glm::vec4(0.3f, 0.4f, 0.5f, 1.0f));

@@ -30,12 +30,13 @@ std::string read(const fs::path& p) {
 }
 
 // Names of the functions a file defines, in order. GLSL and C++ definitions
-// both start a line with a return type, then the name and '('.
+// both start a line with a return type, then the name and '('; a twin
+// written once for float and Float returns F, Vec3Of<F> and the like.
 std::vector<std::string> defined_functions(const std::string& source, bool cpp) {
     static const std::regex glsl_def(
         R"(^(?:float|int|bool|void|vec[234]|ivec[234]|mat[234]|[A-Z]\w*)\s+(\w+)\s*\()");
     static const std::regex cpp_def(
-        R"(^(?:float|int|bool|void|glm::vec[234]|glm::ivec[234]|glm::mat[234]|[A-Z]\w*)\s+(?:\w+::)?(\w+)\s*\()");
+        R"(^(?:float|int|bool|void|glm::vec[234]|glm::ivec[234]|glm::mat[234]|[A-Z]\w*(?:<\w+>)?)\s+(?:\w+::)?(\w+)\s*\()");
     std::vector<std::string> names;
     std::istringstream lines(source);
     std::string line;

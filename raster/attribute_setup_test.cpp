@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "shading/derivatives.h"
 #include "shading/program.h"
 #include "raster/fragment_inputs.h"
 
@@ -35,16 +36,31 @@ double reference(const Vert v[3], double px, double py, int c) {
     return num / den;
 }
 
-FragmentQuad interpolate(const Vert v[3], int qx, int qy) {
+// The inputs of the lanes of the block whose lower-left pixel is (bx, by),
+// in block lane order (all parts).
+struct BlockInputs {
+    std::array<glm::vec4, kBlockLanes> colour, frag_coord;
+};
+
+BlockInputs interpolate(const Vert v[3], int bx, int by) {
     std::array<glm::vec4, 3> colours = {v[0].colour, v[1].colour, v[2].colour};
     SetupVertex sv[3];
     for (int i = 0; i < 3; ++i)
         sv[i] = {WindowPos{float(v[i].x), float(v[i].y), 0.5f, float(1.0 / v[i].w)}, &colours[size_t(i)]};
     std::vector<Plane> planes;
     setup_attribute_planes(sv[0], sv[1], sv[2], 1, planes);
-    FragmentQuad quad;
-    interpolate_quad(planes.data(), 1, QuadCoverage{qx, qy, 0xf}, true, quad);
-    return quad;
+    BlockInputs out;
+    for (int part = 0; part < kBlockLanes / kLanes; ++part) {
+        FragmentLanes lanes;
+        interpolate_lanes(planes.data(), 1, BlockCoverage{bx, by, 0xffff}, part, true, lanes);
+        for (int lane = 0; lane < kLanes; ++lane) {
+            const Vec4& c = lanes.varyings[0];
+            const Vec4& f = lanes.frag_coord;
+            out.colour[size_t(part * kLanes + lane)] = glm::vec4(c.x[lane], c.y[lane], c.z[lane], c.w[lane]);
+            out.frag_coord[size_t(part * kLanes + lane)] = glm::vec4(f.x[lane], f.y[lane], f.z[lane], f.w[lane]);
+        }
+    }
+    return out;
 }
 
 }  // namespace
@@ -52,14 +68,15 @@ FragmentQuad interpolate(const Vert v[3], int qx, int qy) {
 TEST(Interpolation, AffineWhenWIsConstant) {
     const Vert v[3] = {{2.5, 2.5, 1, {0, 0, 0, 1}}, {34.5, 2.5, 1, {32, 0, 0, 1}}, {2.5, 34.5, 1, {0, 32, 0, 1}}};
     // Colour = window position - 2.5: a linear function, so exact at every centre.
-    for (int qy = 2; qy < 20; qy += 2)
-        for (int qx = 2; qx < 20; qx += 2) {
-            const FragmentQuad q = interpolate(v, qx, qy);
-            for (int lane = 0; lane < 4; ++lane) {
-                const float x = float(qx + (lane & 1)), y = float(qy + (lane >> 1));
-                EXPECT_FLOAT_EQ(q.varyings[0][size_t(lane)].r, x - 2.0f);
-                EXPECT_FLOAT_EQ(q.varyings[0][size_t(lane)].g, y - 2.0f);
+    for (int by = 4; by < 20; by += 4)
+        for (int bx = 4; bx < 20; bx += 4) {
+            const BlockInputs q = interpolate(v, bx, by);
+            for (int lane = 0; lane < kBlockLanes; ++lane) {
+                const float x = float(bx + block_lane_x(lane)), y = float(by + block_lane_y(lane));
+                EXPECT_FLOAT_EQ(q.colour[size_t(lane)].r, x - 2.0f);
+                EXPECT_FLOAT_EQ(q.colour[size_t(lane)].g, y - 2.0f);
                 EXPECT_EQ(q.frag_coord[size_t(lane)].x, x + 0.5f);
+                EXPECT_EQ(q.frag_coord[size_t(lane)].y, y + 0.5f);
             }
         }
 }
@@ -68,13 +85,13 @@ TEST(Interpolation, PerspectiveCorrect) {
     const Vert v[3] = {{3.2, 1.7, 0.5, {1, 0, 0.25, 1}}, {60.9, 12.3, 7.0, {0, 1, 0.5, 0}},
                        {20.1, 55.5, 2.5, {0, 0, 1, 0.5}}};
     double worst = 0;
-    for (int qy = 4; qy < 40; qy += 2)
-        for (int qx = 8; qx < 40; qx += 2) {
-            const FragmentQuad q = interpolate(v, qx, qy);
-            for (int lane = 0; lane < 4; ++lane)
+    for (int by = 4; by < 40; by += 4)
+        for (int bx = 8; bx < 40; bx += 4) {
+            const BlockInputs q = interpolate(v, bx, by);
+            for (int lane = 0; lane < kBlockLanes; ++lane)
                 for (int c = 0; c < 4; ++c) {
-                    const double want = reference(v, qx + (lane & 1) + 0.5, qy + (lane >> 1) + 0.5, c);
-                    worst = std::max(worst, std::abs(double(q.varyings[0][size_t(lane)][c]) - want));
+                    const double want = reference(v, bx + block_lane_x(lane) + 0.5, by + block_lane_y(lane) + 0.5, c);
+                    worst = std::max(worst, std::abs(double(q.colour[size_t(lane)][c]) - want));
                 }
         }
     // Bound: the numerator planes (colour/w, |.| <= 2) come out of about ten
@@ -85,14 +102,22 @@ TEST(Interpolation, PerspectiveCorrect) {
     EXPECT_GT(worst, 0.0);  // float arithmetic, not a copy of the reference
 }
 
-// The derivative of a linear varying across the quad is its slope.
+// The derivative of a linear varying across each quad is its slope, in
+// every lane.
 TEST(Interpolation, QuadDerivatives) {
     const Vert v[3] = {{0.5, 0.5, 1, {0, 0, 0, 0}}, {64.5, 0.5, 1, {16, 0, 0, 0}}, {0.5, 64.5, 1, {0, -8, 0, 0}}};
-    const FragmentQuad q = interpolate(v, 10, 20);
-    for (int lane = 0; lane < 4; ++lane) {
-        const Fragment f(q, lane);
-        EXPECT_FLOAT_EQ(f.dFdx(0).r, 0.25f);
-        EXPECT_FLOAT_EQ(f.dFdy(0).g, -0.125f);
+    std::array<glm::vec4, 3> colours = {v[0].colour, v[1].colour, v[2].colour};
+    SetupVertex sv[3];
+    for (int i = 0; i < 3; ++i)
+        sv[i] = {WindowPos{float(v[i].x), float(v[i].y), 0.5f, float(1.0 / v[i].w)}, &colours[size_t(i)]};
+    std::vector<Plane> planes;
+    setup_attribute_planes(sv[0], sv[1], sv[2], 1, planes);
+    FragmentLanes lanes;
+    interpolate_lanes(planes.data(), 1, BlockCoverage{8, 20, 0xffff}, 0, true, lanes);
+    const Float ddx = dFdx(lanes.varyings[0].x), ddy = dFdy(lanes.varyings[0].y);
+    for (int lane = 0; lane < kLanes; ++lane) {
+        EXPECT_FLOAT_EQ(ddx[lane], 0.25f);
+        EXPECT_FLOAT_EQ(ddy[lane], -0.125f);
     }
 }
 

@@ -36,13 +36,26 @@ struct PreparedDraw {
     std::vector<unsigned> clip_masks;     // outcodes of `shaded`
 };
 
+// One part of a block after the fragment stage: what output merging needs.
+struct ShadedPart {
+    Vec4 colour;
+    Float depth;          // gl_FragCoord.z, clamped
+    unsigned live = 0;    // covered and not discarded, bit i = lane i of the part
+    int x = 0, y = 0;     // the block's lower-left pixel
+    int part = 0;
+};
+
 // Per-worker scratch, so the tile phase allocates nothing once warm.
 struct WorkerScratch {
-    std::vector<QuadCoverage> quads;
-    std::vector<FragmentQuad> inputs;
-    std::vector<FragmentOut> outputs;
+    std::vector<BlockCoverage> blocks;
+    FragmentLanes inputs;
+    FragmentResult result;
+    std::vector<ShadedPart> shaded;
     StageTimes times;
 };
+
+constexpr int kParts = kBlockLanes / kLanes;  // twin calls per block
+constexpr unsigned kPartBits = (1u << kLanes) - 1;
 
 }  // namespace
 
@@ -189,35 +202,36 @@ void CpuRenderer::Impl::shade_tile(int tile, int worker, std::vector<PreparedDra
         const SetupTriangle& tri = triangles[index];
         const PreparedDraw& d = draws[tri.draw];
         const auto t0 = Clock::now();
-        s.quads.clear();
-        rasterize_in_tile(tri, rect, s.quads);
+        s.blocks.clear();
+        rasterize_in_tile(tri, rect, s.blocks);
         const auto t1 = Clock::now();
 
-        // Grow only: resize() to a larger size value-initialises what a
-        // smaller triangle left, a memset of 600 bytes a quad, and
-        // interpolate_quad writes everything a twin reads.
-        if (s.inputs.size() < s.quads.size()) {
-            s.inputs.resize(s.quads.size());
-            s.outputs.resize(s.quads.size());
-        }
+        // Fragment stage: every part of a block that has a covered lane.
+        // Parts without one are skipped (llvmpipe skips them too); nothing
+        // crosses parts, so skipping changes no value.
         const Plane* tri_planes = &planes[tri.first_plane];
-        for (size_t q = 0; q < s.quads.size(); ++q) {
-            interpolate_quad(tri_planes, d.varying_count, s.quads[q], tri.front_facing, s.inputs[q]);
-            s.outputs[q].discard_mask = 0;
-            d.fragment->shade(s.inputs[q], s.outputs[q]);
-        }
+        s.shaded.clear();
+        for (const BlockCoverage& block : s.blocks)
+            for (int part = 0; part < kParts; ++part) {
+                const unsigned covered = block.mask >> (part * kLanes) & kPartBits;
+                if (!covered) continue;
+                interpolate_lanes(tri_planes, d.varying_count, block, part, tri.front_facing, s.inputs);
+                d.fragment->shade(s.inputs, s.result);
+                const unsigned live = covered & ~simd::bits(s.result.discarded);
+                if (live) s.shaded.push_back({s.result.colour, s.inputs.frag_coord.z, live, block.x, block.y, part});
+            }
         const auto t2 = Clock::now();
 
         const DrawState& state = d.call->state;
-        for (size_t q = 0; q < s.quads.size(); ++q) {
-            const unsigned live = s.quads[q].mask & ~s.outputs[q].discard_mask;
-            for (int lane = 0; lane < 4; ++lane) {
-                if (!(live >> lane & 1)) continue;
-                const size_t p = fb.index(s.quads[q].x + (lane & 1), s.quads[q].y + (lane >> 1));
-                if (!depth_test(state, s.inputs[q].frag_coord[lane].z, fb.depth[p])) continue;
-                fb.colour[p] = blend(state.blend, s.outputs[q].colour[lane], fb.colour[p]);
+        for (const ShadedPart& sp : s.shaded)
+            for (int lane = 0; lane < kLanes; ++lane) {
+                if (!(sp.live >> lane & 1)) continue;
+                const int block_lane = sp.part * kLanes + lane;
+                const size_t p = fb.index(sp.x + block_lane_x(block_lane), sp.y + block_lane_y(block_lane));
+                if (!depth_test(state, sp.depth[lane], fb.depth[p])) continue;
+                const glm::vec4 src(sp.colour.x[lane], sp.colour.y[lane], sp.colour.z[lane], sp.colour.w[lane]);
+                fb.colour[p] = blend(state.blend, src, fb.colour[p]);
             }
-        }
         const auto t3 = Clock::now();
         s.times.raster_ms += ms_between(t0, t1);
         s.times.fragment_ms += ms_between(t1, t2);

@@ -1,27 +1,47 @@
 // fragment_inputs.cpp: see fragment_inputs.h.
 #include "raster/fragment_inputs.h"
 
-#include <algorithm>
-
 namespace st {
 
-void interpolate_quad(const Plane* planes, int varying_count, const QuadCoverage& quad,
-                      bool front_facing, FragmentQuad& out) {
+namespace {
+
+Float at(const Plane& p, Float px, Float py) {
+    return simd::fma(Float(p.dady), py, simd::fma(Float(p.dadx), px, Float(p.a0)));
+}
+
+}  // namespace
+
+Float lane_pixel_x(int block_x, int part) {
+    Float x;
+    for (int lane = 0; lane < kLanes; ++lane) x.set(lane, float(block_x + block_lane_x(part * kLanes + lane)));
+    return x;
+}
+
+Float lane_pixel_y(int block_y, int part) {
+    Float y;
+    for (int lane = 0; lane < kLanes; ++lane) y.set(lane, float(block_y + block_lane_y(part * kLanes + lane)));
+    return y;
+}
+
+void interpolate_lanes(const Plane* planes, int varying_count, const BlockCoverage& block, int part,
+                       bool front_facing, FragmentLanes& out) {
     const Plane& z_plane = planes[0];
     const Plane& inv_w_plane = planes[1];
     const Plane* varying_planes = planes + 2;
     out.front_facing = front_facing;
-    out.coverage_mask = quad.mask;
-    for (int lane = 0; lane < 4; ++lane) {
-        const int px = quad.x + (lane & 1), py = quad.y + (lane >> 1);
-        // Depth is clamped to the depth range [0, 1] before the test.
-        const float z = std::clamp(z_plane.at(px, py), 0.0f, 1.0f);
-        const float inv_w = inv_w_plane.at(px, py);
-        const float w = 1.0f / inv_w;
-        out.frag_coord[lane] = glm::vec4(float(px) + 0.5f, float(py) + 0.5f, z, inv_w);
-        for (int slot = 0; slot < varying_count; ++slot)
-            for (int c = 0; c < 4; ++c)
-                out.varyings[slot][lane][c] = varying_planes[slot * 4 + c].at(px, py) * w;
+    out.covered = Mask::from_bits(block.mask >> (part * kLanes));
+    const Float px = lane_pixel_x(block.x, part), py = lane_pixel_y(block.y, part);
+    // Depth is clamped to the depth range [0, 1] before the test (a NaN
+    // stays NaN, as std::clamp leaves it).
+    const Float z_raw = at(z_plane, px, py);
+    const Float z = select(z_raw < Float(0.0f), Float(0.0f), select(Float(1.0f) < z_raw, Float(1.0f), z_raw));
+    const Float inv_w = at(inv_w_plane, px, py);
+    const Float w = Float(1.0f) / inv_w;
+    out.frag_coord = Vec4(px + Float(0.5f), py + Float(0.5f), z, inv_w);
+    for (int slot = 0; slot < varying_count; ++slot) {
+        const Plane* p = varying_planes + slot * 4;
+        out.varyings[size_t(slot)] = Vec4(at(p[0], px, py) * w, at(p[1], px, py) * w, at(p[2], px, py) * w,
+                                          at(p[3], px, py) * w);
     }
 }
 

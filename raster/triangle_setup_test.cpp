@@ -21,11 +21,11 @@ std::vector<std::pair<int, int>> covered(SetupVertex a, SetupVertex b, SetupVert
     std::vector<Plane> planes;
     std::vector<std::pair<int, int>> out;
     if (!setup_triangle(a, b, c, 0, w, h, tri, planes)) return out;
-    std::vector<QuadCoverage> quads;
-    rasterize_in_tile(tri, TileRect{0, 0, w, h}, quads);
-    for (const auto& q : quads)
-        for (int lane = 0; lane < 4; ++lane)
-            if (q.mask >> lane & 1) out.emplace_back(q.x + (lane & 1), q.y + (lane >> 1));
+    std::vector<BlockCoverage> blocks;
+    rasterize_in_tile(tri, TileRect{0, 0, w, h}, blocks);
+    for (const auto& b : blocks)
+        for (int lane = 0; lane < kBlockLanes; ++lane)
+            if (b.mask >> lane & 1) out.emplace_back(b.x + block_lane_x(lane), b.y + block_lane_y(lane));
     std::sort(out.begin(), out.end());
     return out;
 }
@@ -92,12 +92,12 @@ TEST(TileRaster, TilesPartitionTheTriangle) {
     SetupTriangle tri;
     std::vector<Plane> planes;
     ASSERT_TRUE(setup_triangle(at(-30.3f, 3.1f), at(150.7f, 20.2f), at(40.4f, 140.9f), 0, 130, 130, tri, planes));
-    std::vector<QuadCoverage> whole, tiled;
+    std::vector<BlockCoverage> whole, tiled;
     rasterize_in_tile(tri, TileRect{0, 0, 130, 130}, whole);
     for (int ty = 0; ty < 130; ty += kTileSize)
         for (int tx = 0; tx < 130; tx += kTileSize)
             rasterize_in_tile(tri, TileRect{tx, ty, std::min(130, tx + kTileSize), std::min(130, ty + kTileSize)}, tiled);
-    auto count = [](const std::vector<QuadCoverage>& qs) {
+    auto count = [](const std::vector<BlockCoverage>& qs) {
         long n = 0;
         for (const auto& q : qs) n += __builtin_popcount(q.mask);
         return n;

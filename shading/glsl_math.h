@@ -1,6 +1,9 @@
 // glsl_math.h: GLSL built-in functions as llvmpipe evaluates them, the one
 // place where twins get them. Every transcendental function a twin calls
-// comes from here, so all twins round alike and one fix reaches all.
+// comes from here, so all twins round alike and one fix reaches all. Each
+// is written once, as a template over the number type: `float` for vertex
+// twins and host code, `Float` (one invocation per lane, lane_vec.h) for
+// fragment twins; both give the same bits per value.
 //
 // What llvmpipe does (Mesa 22.3, NIR + gallivm), for an FMA3 host:
 // - exp(x) is exp2(x * fl(log2 e)) (glsl_to_nir), exp2 is lp_build_exp2: clamp
@@ -15,20 +18,141 @@
 //   each product rounded (GLSL IR's matrix lowering).
 // - a*b + c in GLSL is never fused (lower_ffma32): twins write it plainly,
 //   and -ffp-contract=off keeps the compiler from fusing it.
+// - max/min return the other operand when one is NaN (std::fmax).
+// The arithmetic follows gallivm/lp_bld_arit.c (lp_build_exp2,
+// lp_build_polynomial, lp_build_ifloor_fract, lp_build_rsqrt);
+// docs/llvmpipe/ has the reading.
 #pragma once
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "simd/lane_vec.h"
+
 namespace st::glsl {
 
-float exp2(float x);
-float exp(float x);
-float inversesqrt(float x);
-float dot(const glm::vec3& a, const glm::vec3& b);
-float length(const glm::vec3& v);
-glm::vec3 normalize(const glm::vec3& v);
+// The handful of primitives the templates below need, for plain floats;
+// simd/lanes.h has the same names for Float.
+namespace scalar {
+ST_INLINE float select(bool m, float a, float b) { return m ? a : b; }
+ST_INLINE bool isnan(float x) { return x != x; }
+ST_INLINE float fma(float a, float b, float c) { return std::fma(a, b, c); }
+ST_INLINE float floor(float x) { return std::floor(x); }
+ST_INLINE float sqrt(float x) { return std::sqrt(x); }
+ST_INLINE float abs(float x) { return std::fabs(x); }
+ST_INLINE float max(float a, float b) { return std::fmax(a, b); }
+ST_INLINE float min(float a, float b) { return std::fmin(a, b); }
+// 2^i for an integral float i in [-126, 128]: the exponent field alone
+// (128 gives +inf's pattern).
+ST_INLINE float exponent_to_float(float i) {
+    return std::bit_cast<float>(uint32_t(int32_t(i) + 127) << 23);
+}
+}  // namespace scalar
+
+namespace lanes {
+using simd::abs;
+using simd::floor;
+using simd::fma;
+using simd::isnan;
+using simd::max;
+using simd::min;
+using simd::select;
+using simd::sqrt;
+ST_INLINE Float exponent_to_float(Float i) {
+    return simd::bit_cast_float((simd::itrunc(i) + Int(127)) << 23);
+}
+}  // namespace lanes
+
+namespace detail {
+
+using namespace scalar;
+using namespace lanes;
+
+// 2^x on [0, 1): minimax fit, the coefficients llvmpipe uses, as floats.
+inline constexpr float kExp2Poly[6] = {
+    float(1.000000000000000000000), float(0.693153073200168932794), float(0.240153617044375388211),
+    float(0.0558263180532956664775), float(0.00898934009049466391101), float(0.00187757667519147912699),
+};
+
+// Even and odd coefficients in two Horner chains over x^2, joined by one
+// more multiply-add: c0 + x2 (c2 + x2 c4) + x (c1 + x2 (c3 + x2 c5)).
+template <class F> ST_INLINE F exp2_polynomial(F x) {
+    const F x2 = x * x;
+    F even = F(kExp2Poly[4]);
+    even = fma(x2, even, F(kExp2Poly[2]));
+    even = fma(x2, even, F(kExp2Poly[0]));
+    F odd = F(kExp2Poly[5]);
+    odd = fma(x2, odd, F(kExp2Poly[3]));
+    odd = fma(x2, odd, F(kExp2Poly[1]));
+    return fma(odd, x, even);
+}
+
+template <class F> ST_INLINE F exp2(F x) {
+    const auto nan = isnan(x);
+    F c = select(x < F(128.0f), x, F(128.0f));
+    c = select(c > F(-126.99999f), c, F(-126.99999f));
+    const F ipart = floor(c);
+    const F fpart = c - ipart;
+    const F r = exponent_to_float(ipart) * exp2_polynomial(fpart);
+    return select(nan, x, r);  // NaN passes through
+}
+
+}  // namespace detail
+
+ST_INLINE float exp2(float x) { return detail::exp2(x); }
+ST_INLINE Float exp2(Float x) { return detail::exp2(x); }
+
+// M_LOG2E as NIR folds it.
+inline constexpr float kLog2e = float(1.44269504088896340736);
+ST_INLINE float exp(float x) { return exp2(x * kLog2e); }
+ST_INLINE Float exp(Float x) { return exp2(x * Float(kLog2e)); }
+
+ST_INLINE float inversesqrt(float x) { return 1.0f / std::sqrt(x); }
+ST_INLINE Float inversesqrt(Float x) { return Float(1.0f) / simd::sqrt(x); }
+
+ST_INLINE float abs(float x) { return std::fabs(x); }
+ST_INLINE Float abs(Float x) { return simd::abs(x); }
+ST_INLINE float max(float a, float b) { return std::fmax(a, b); }
+ST_INLINE Float max(Float a, Float b) { return simd::max(a, b); }
+ST_INLINE float min(float a, float b) { return std::fmin(a, b); }
+ST_INLINE Float min(Float a, Float b) { return simd::min(a, b); }
+
+// Measured against llvmpipe (thin-slab scenes, bit for bit): the three
+// products are summed as x + (y + z), not left to right as fsum3 reads.
+template <class V> ST_INLINE auto dot3(const V& a, const V& b) {
+    const auto xx = a.x * b.x, yy = a.y * b.y, zz = a.z * b.z;
+    const auto yz = yy + zz;
+    return xx + yz;
+}
+ST_INLINE float dot(const glm::vec3& a, const glm::vec3& b) { return dot3(a, b); }
+ST_INLINE Float dot(const Vec3& a, const Vec3& b) { return dot3(a, b); }
+
+ST_INLINE float length(const glm::vec3& v) { return std::sqrt(dot(v, v)); }
+ST_INLINE Float length(const Vec3& v) { return simd::sqrt(dot(v, v)); }
+
+ST_INLINE glm::vec3 normalize(const glm::vec3& v) {
+    const float s = inversesqrt(dot(v, v));
+    return glm::vec3(v.x * s, v.y * s, v.z * s);
+}
+ST_INLINE Vec3 normalize(const Vec3& v) {
+    const Float s = inversesqrt(dot(v, v));
+    return Vec3(v.x * s, v.y * s, v.z * s);
+}
+
+// GLSL's c ? a : b (NIR bcsel): both sides are evaluated, and each lane
+// takes one. A small if/else that only assigns is the same after NIR's
+// peephole_select; twins write it this way so one source serves both types.
+ST_INLINE float select(bool c, float a, float b) { return c ? a : b; }
+ST_INLINE glm::vec3 select(bool c, const glm::vec3& a, const glm::vec3& b) { return c ? a : b; }
+ST_INLINE Float select(Mask c, Float a, Float b) { return simd::select(c, a, b); }
+ST_INLINE Vec3 select(Mask c, const Vec3& a, const Vec3& b) { return st::select(c, a, b); }
+ST_INLINE Vec4 select(Mask c, const Vec4& a, const Vec4& b) { return st::select(c, a, b); }
+
 glm::vec4 mul(const glm::mat4& m, const glm::vec4& v);  // GLSL m * v
 
 }  // namespace st::glsl

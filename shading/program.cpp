@@ -1,4 +1,4 @@
-// program.cpp: uniform look-up and quad derivatives for twins.
+// program.cpp: uniform and sampler look-up for twins.
 #include "shading/program.h"
 
 #include <stdexcept>
@@ -45,19 +45,6 @@ const Sampler2D& Bindings::sampler(const std::string& name) const {
     for (size_t i = 0; i < sampler_names.size(); ++i)
         if (sampler_names[i] == name) return *samplers[i];
     throw std::runtime_error("sampler '" + name + "' is not bound");
-}
-
-// Lanes: 0 = (x, y), 1 = (x+1, y), 2 = (x, y+1), 3 = (x+1, y+1). The
-// difference is taken within the lane's own row (or column), which is what
-// llvmpipe computes for both dFdxFine and dFdxCoarse.
-glm::vec4 Fragment::dFdx(int slot) const {
-    const int row = lane_ & 2;
-    return quad_.varyings[slot][row + 1] - quad_.varyings[slot][row];
-}
-
-glm::vec4 Fragment::dFdy(int slot) const {
-    const int column = lane_ & 1;
-    return quad_.varyings[slot][column + 2] - quad_.varyings[slot][column];
 }
 
 }  // namespace st

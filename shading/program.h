@@ -2,10 +2,11 @@
 //
 // A vertex twin mirrors a .vert file: it reads vec4 attributes and uniforms
 // and writes the clip-space position and vec4 varyings (slot N is the GLSL
-// varying declared with layout(location = N)). A fragment twin mirrors a
-// .frag file and runs on one 2x2 quad at a time, as the GPU does, so that
-// dFdx/dFdy come from the quad. Start with ScalarFragmentTwin (below) unless
-// a shader needs derivatives of values it computes itself.
+// varying declared with layout(location = N)), one vertex at a time. A
+// fragment twin mirrors a .frag file and runs on kLanes fragments at once
+// (simd/lanes.h), whole 2x2 quads as the GPU does, so that dFdx/dFdy of any
+// value come from the quad (shading/derivatives.h). Derive from
+// FragmentProgram (below).
 #pragma once
 
 #include <array>
@@ -18,6 +19,7 @@
 #include <glm/vec4.hpp>
 
 #include "frame/frame.h"
+#include "simd/lane_vec.h"
 
 namespace st {
 
@@ -56,53 +58,52 @@ public:
     virtual void run(const glm::vec4* attributes, VertexOut& out) const = 0;
 };
 
-// One 2x2 quad of fragments. Lanes are ordered (x, y), (x+1, y), (x, y+1),
-// (x+1, y+1) in GL window coordinates (y up). Lanes outside the triangle
-// (helper lanes) still hold extrapolated inputs and are shaded, as on a GPU;
-// their results are discarded by the pipeline.
-struct FragmentQuad {
-    std::array<glm::vec4, 4> frag_coord;            // gl_FragCoord
-    std::array<std::array<glm::vec4, 4>, kMaxVaryings> varyings;  // [slot][lane]
+// The fragments a fragment twin shades at once: kLanes lanes, that is
+// kLanes / 4 quads of one 4x4 block, in llvmpipe's order: quads (0,0),
+// (2,0), (0,2), (2,2) of the block, and in each quad the pixels (x, y),
+// (x+1, y), (x, y+1), (x+1, y+1) in GL window coordinates (y up). Lanes
+// outside the triangle (helper lanes) hold extrapolated inputs and are
+// shaded as on a GPU, so that derivatives exist; the pipeline drops their
+// results.
+struct FragmentLanes {
+    Vec4 frag_coord;                                // gl_FragCoord
+    std::array<Vec4, kMaxVaryings> varyings;        // [slot], one value per lane
     bool front_facing = true;
-    unsigned coverage_mask = 0;                     // bit i = lane i covered
+    Mask covered;                                   // false on helper lanes
 };
 
-struct FragmentOut {
-    std::array<glm::vec4, 4> colour;                // layout(location = 0) out
-    unsigned discard_mask = 0;                      // bit i = lane i discarded
+struct FragmentResult {
+    Vec4 colour;                                    // layout(location = 0) out
+    Mask discarded;                                 // lanes that executed discard
 };
 
 class FragmentTwin {
 public:
     virtual ~FragmentTwin() = default;
     virtual void bind(const Bindings&) {}
-    virtual void shade(const FragmentQuad& in, FragmentOut& out) const = 0;
+    virtual void shade(const FragmentLanes& in, FragmentResult& out) const = 0;
 };
 
-// Per-lane view of a quad for twins written like a scalar GLSL main().
+// What a twin's main() reads: the inputs of every lane at once.
 class Fragment {
 public:
-    Fragment(const FragmentQuad& quad, int lane) : quad_(quad), lane_(lane) {}
-    const glm::vec4& varying(int slot) const { return quad_.varyings[slot][lane_]; }
-    const glm::vec4& frag_coord() const { return quad_.frag_coord[lane_]; }
-    bool front_facing() const { return quad_.front_facing; }
-    // Derivatives of an input varying: per-row/column differences inside the
-    // quad, as llvmpipe computes them (fine and coarse agree there).
-    glm::vec4 dFdx(int slot) const;
-    glm::vec4 dFdy(int slot) const;
+    explicit Fragment(const FragmentLanes& lanes) : lanes_(lanes) {}
+    const Vec4& varying(int slot) const { return lanes_.varyings[size_t(slot)]; }
+    const Vec4& frag_coord() const { return lanes_.frag_coord; }
+    bool front_facing() const { return lanes_.front_facing; }
 
 private:
-    const FragmentQuad& quad_;
-    int lane_;
+    const FragmentLanes& lanes_;
 };
 
-// Adapter: Derived implements `glm::vec4 main(const Fragment&) const`.
+// Adapter: Derived implements `Vec4 main(const Fragment&) const`, the twin
+// of the shader's main(), on all lanes at once.
 template <class Derived>
-class ScalarFragmentTwin : public FragmentTwin {
+class FragmentProgram : public FragmentTwin {
 public:
-    void shade(const FragmentQuad& in, FragmentOut& out) const override {
-        for (int lane = 0; lane < 4; ++lane)
-            out.colour[lane] = static_cast<const Derived*>(this)->main(Fragment(in, lane));
+    void shade(const FragmentLanes& in, FragmentResult& out) const override {
+        out.discarded = Mask(false);
+        out.colour = static_cast<const Derived*>(this)->main(Fragment(in));
     }
 };
 

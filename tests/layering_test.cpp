@@ -21,18 +21,20 @@ namespace {
 
 const std::map<std::string, std::set<std::string>>& allowed() {
     static const std::map<std::string, std::set<std::string>> table = {
+        {"simd", {}},
         {"frame", {}},
         {"image", {}},
-        {"texture", {"frame"}},
-        {"shading", {"frame", "texture"}},
-        {"raster", {"frame", "image", "texture", "shading"}},
-        {"kernels", {"frame", "texture", "shading"}},
+        {"texture", {"frame", "simd"}},
+        {"shading", {"frame", "simd", "texture"}},
+        {"raster", {"frame", "image", "simd", "texture", "shading"}},
+        {"kernels", {"frame", "simd", "texture", "shading"}},
         {"gl", {"frame", "image"}},
         {"reference", {"kernels"}},
         {"optics", {"reference"}},
-        {"scene", {"frame", "image", "texture", "shading", "kernels"}},
-        {"app", {"frame", "image", "texture", "shading", "raster", "kernels", "gl", "scene", "reference", "optics"}},
-        {"bench", {"frame", "image", "texture", "shading", "raster", "kernels", "gl", "scene", "app"}},
+        {"scene", {"frame", "image", "simd", "texture", "shading", "kernels"}},
+        {"app", {"frame", "image", "simd", "texture", "shading", "raster", "kernels", "gl", "scene", "reference",
+                 "optics"}},
+        {"bench", {"frame", "image", "simd", "texture", "shading", "raster", "kernels", "gl", "scene", "app"}},
         {"tests", {}},
     };
     return table;

@@ -143,6 +143,27 @@ glm::vec4 Sampler2D::sample(const glm::vec2& st) const {
     return tex_->format == TextureFormat::RGBA8 ? sample_linear_unorm8(st) : sample_linear_float(st);
 }
 
+namespace {
+void set_lane(Vec4& out, int lane, const glm::vec4& t) {
+    out.x.set(lane, t.x);
+    out.y.set(lane, t.y);
+    out.z.set(lane, t.z);
+    out.w.set(lane, t.w);
+}
+}  // namespace
+
+Vec4 Sampler2D::sample(const Vec2& st) const {
+    Vec4 out;
+    for (int lane = 0; lane < kLanes; ++lane) set_lane(out, lane, sample(glm::vec2(st.x[lane], st.y[lane])));
+    return out;
+}
+
+Vec4 Sampler2D::fetch(Int x, Int y) const {
+    Vec4 out;
+    for (int lane = 0; lane < kLanes; ++lane) set_lane(out, lane, fetch(x[lane], y[lane]));
+    return out;
+}
+
 glm::vec4 Sampler2D::sample_nearest(const glm::vec2& st) const {
     return fetch(nearest_texel(st.x, tex_->width, tex_->wrap), nearest_texel(st.y, tex_->height, tex_->wrap));
 }

@@ -6,6 +6,7 @@
 #include <glm/vec4.hpp>
 
 #include "frame/frame.h"
+#include "simd/lane_vec.h"
 
 namespace st {
 
@@ -17,6 +18,11 @@ public:
     glm::vec4 sample(const glm::vec2& st) const;
     // GLSL texelFetch(sampler2D, ivec2, 0); out-of-range texels return 0.
     glm::vec4 fetch(int x, int y) const;
+
+    // The same for every lane of a fragment twin at once, lane for lane
+    // equal to the calls above.
+    Vec4 sample(const Vec2& st) const;
+    Vec4 fetch(Int x, Int y) const;
 
     int width() const { return tex_->width; }
     int height() const { return tex_->height; }

@@ -76,13 +76,13 @@ TEST_P(FilterTest, WrapModes) {
             for (int c = 0; c < 4; ++c) EXPECT_NEAR(a[c], b[c], coordinate_rounding(w)) << c;
         }
         // Between the last and the first texel, across the seam.
-        const glm::vec4 seam = s.sample({0.0f, inside.y});
+        const glm::vec4 seam = s.sample(glm::vec2(0.0f, inside.y));
         const glm::vec4 mean = (s.fetch(0, 2) + s.fetch(t.width - 1, 2)) * 0.5f;
         for (int c = 0; c < 4; ++c) EXPECT_NEAR(seam[c], mean[c], 1.0f / 255.0f) << c;
     } else {
-        EXPECT_EQ(s.sample({-3.0f, inside.y}), s.fetch(0, 2));
-        EXPECT_EQ(s.sample({7.5f, inside.y}), s.fetch(t.width - 1, 2));
-        EXPECT_EQ(s.sample({0.0f, inside.y}), s.fetch(0, 2));
+        EXPECT_EQ(s.sample(glm::vec2(-3.0f, inside.y)), s.fetch(0, 2));
+        EXPECT_EQ(s.sample(glm::vec2(7.5f, inside.y)), s.fetch(t.width - 1, 2));
+        EXPECT_EQ(s.sample(glm::vec2(0.0f, inside.y)), s.fetch(0, 2));
     }
 }
 
@@ -99,8 +99,8 @@ TEST(Nearest, PicksTheTexelUnderTheCoordinate) {
             const Sampler2D s(t);
             for (int x = 0; x < w; ++x) {
                 const float left = (float(x) + 0.01f) / float(w), right = (float(x) + 0.99f) / float(w);
-                EXPECT_EQ(s.sample({left, 0.5f}), s.fetch(x, 1));
-                EXPECT_EQ(s.sample({right, 0.5f}), s.fetch(x, 1));
+                EXPECT_EQ(s.sample(glm::vec2(left, 0.5f)), s.fetch(x, 1));
+                EXPECT_EQ(s.sample(glm::vec2(right, 0.5f)), s.fetch(x, 1));
             }
         }
 }
@@ -115,7 +115,7 @@ TEST(Unorm8Filter, WeightsAreQuantisedTo8Bits) {
     t.height = 1;
     t.texels8 = {0, 0, 0, 0, 255, 255, 255, 255};
     const Sampler2D s(t);
-    const glm::vec4 v = s.sample({(0.5f + 0.25f) / 2.0f, 0.5f});
+    const glm::vec4 v = s.sample(glm::vec2((0.5f + 0.25f) / 2.0f, 0.5f));
     EXPECT_EQ(v.r, 64.0f * (1.0f / 255.0f));
 }
 

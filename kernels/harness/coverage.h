@@ -5,9 +5,9 @@
 
 namespace st {
 
-class CoverageFragment final : public ScalarFragmentTwin<CoverageFragment> {
+class CoverageFragment final : public FragmentProgram<CoverageFragment> {
 public:
-    glm::vec4 main(const Fragment&) const;
+    Vec4 main(const Fragment&) const;
 };
 
 }  // namespace st

@@ -3,8 +3,8 @@
 
 namespace st {
 
-glm::vec4 CoverageFragment::main(const Fragment&) const {
-    return glm::vec4(1.0f);
+Vec4 CoverageFragment::main(const Fragment&) const {
+    return Vec4(1.0f);
 }
 
 }  // namespace st

@@ -13,10 +13,10 @@ public:
     void run(const glm::vec4* attributes, VertexOut& out) const override;
 };
 
-class BackgroundFragment final : public ScalarFragmentTwin<BackgroundFragment> {
+class BackgroundFragment final : public FragmentProgram<BackgroundFragment> {
 public:
     void bind(const Bindings& b) override { painting_ = &b.sampler("painting"); }
-    glm::vec4 main(const Fragment& frag) const;
+    Vec4 main(const Fragment& frag) const;
 
 private:
     const Sampler2D* painting_ = nullptr;

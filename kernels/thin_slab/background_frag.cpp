@@ -8,8 +8,8 @@ namespace {
 constexpr int v_uv = 0;  // inputs
 }  // namespace
 
-glm::vec4 BackgroundFragment::main(const Fragment& frag) const {
-    return painting_->sample(glm::vec2(frag.varying(v_uv)));
+Vec4 BackgroundFragment::main(const Fragment& frag) const {
+    return painting_->sample(frag.varying(v_uv).xy());
 }
 
 }  // namespace st

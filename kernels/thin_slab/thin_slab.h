@@ -28,10 +28,10 @@ private:
     glm::mat4 view_proj_{1.0f};
 };
 
-class ThinSlabFragment final : public ScalarFragmentTwin<ThinSlabFragment> {  // thin_slab.frag
+class ThinSlabFragment final : public FragmentProgram<ThinSlabFragment> {  // thin_slab.frag
 public:
     void bind(const Bindings& b) override;
-    glm::vec4 main(const Fragment& frag) const;
+    Vec4 main(const Fragment& frag) const;
 
 private:
     ThinSlabUniforms u_;
@@ -59,29 +59,29 @@ private:
     glm::mat4 view_proj_{1.0f};
 };
 
-class ThinSlabLitFragment final : public ScalarFragmentTwin<ThinSlabLitFragment> {  // thin_slab_lit.frag
+class ThinSlabLitFragment final : public FragmentProgram<ThinSlabLitFragment> {  // thin_slab_lit.frag
 public:
     void bind(const Bindings& b) override;
-    glm::vec4 main(const Fragment& frag) const;
+    Vec4 main(const Fragment& frag) const;
 
 private:
     const Sampler2D* flag_ = nullptr;
 };
 
-class ThinSlabBaselineFragment final : public ScalarFragmentTwin<ThinSlabBaselineFragment> {  // thin_slab_baseline.frag
+class ThinSlabBaselineFragment final : public FragmentProgram<ThinSlabBaselineFragment> {  // thin_slab_baseline.frag
 public:
     void bind(const Bindings& b) override;
-    glm::vec4 main(const Fragment& frag) const;
+    Vec4 main(const Fragment& frag) const;
 
 private:
     ThinSlabUniforms u_;
     const Sampler2D* flag_ = nullptr;
 };
 
-class ThinSlabSweepFragment final : public ScalarFragmentTwin<ThinSlabSweepFragment> {  // thin_slab_sweep.frag
+class ThinSlabSweepFragment final : public FragmentProgram<ThinSlabSweepFragment> {  // thin_slab_sweep.frag
 public:
     void bind(const Bindings& b) override;
-    glm::vec4 main(const Fragment& frag) const;
+    Vec4 main(const Fragment& frag) const;
 
 private:
     const Sampler2D* inputs_ = nullptr;

@@ -15,12 +15,11 @@ void ThinSlabBaselineFragment::bind(const Bindings& b) {
     flag_ = &b.sampler("flag");
 }
 
-glm::vec4 ThinSlabBaselineFragment::main(const Fragment& frag) const {
-    glm::vec3 texel = glm::vec3(flag_->sample(glm::vec2(frag.varying(v_uv))));
-    glm::vec3 lit = lambert_baseline(glm::vec3(frag.varying(v_position)),
-                                     glsl::normalize(glm::vec3(frag.varying(v_normal))), u_.eye, u_.light,
-                                     u_.power, u_.albedo * texel * 0.8f);
-    return glm::vec4(lit, 0.2f);
+Vec4 ThinSlabBaselineFragment::main(const Fragment& frag) const {
+    Vec3 texel = flag_->sample(frag.varying(v_uv).xy()).xyz();
+    Vec3 lit = lambert_baseline(frag.varying(v_position).xyz(), glsl::normalize(frag.varying(v_normal).xyz()),
+                                Vec3(u_.eye), Vec3(u_.light), Float(u_.power), Vec3(u_.albedo) * texel * 0.8f);
+    return Vec4(lit, 0.2f);
 }
 
 }  // namespace st

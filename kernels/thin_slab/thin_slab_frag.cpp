@@ -15,10 +15,10 @@ void ThinSlabFragment::bind(const Bindings& b) {
     flag_ = &b.sampler("flag");
 }
 
-glm::vec4 ThinSlabFragment::main(const Fragment& frag) const {
-    glm::vec3 texel = glm::vec3(flag_->sample(glm::vec2(frag.varying(v_uv))));
-    return thin_slab(glm::vec3(frag.varying(v_position)), glsl::normalize(glm::vec3(frag.varying(v_normal))),
-                     u_.eye, u_.light, u_.power, u_.tau1, u_.albedo * texel);
+Vec4 ThinSlabFragment::main(const Fragment& frag) const {
+    Vec3 texel = flag_->sample(frag.varying(v_uv).xy()).xyz();
+    return thin_slab(frag.varying(v_position).xyz(), glsl::normalize(frag.varying(v_normal).xyz()), Vec3(u_.eye),
+                     Vec3(u_.light), Float(u_.power), Float(u_.tau1), Vec3(u_.albedo) * texel);
 }
 
 }  // namespace st

@@ -10,10 +10,10 @@ constexpr int v_radiance = 0, v_uv = 1;  // inputs
 
 void ThinSlabLitFragment::bind(const Bindings& b) { flag_ = &b.sampler("flag"); }
 
-glm::vec4 ThinSlabLitFragment::main(const Fragment& frag) const {
-    glm::vec3 texel = glm::vec3(flag_->sample(glm::vec2(frag.varying(v_uv))));
-    const glm::vec4& radiance = frag.varying(v_radiance);
-    return glm::vec4(glm::vec3(radiance) * texel, radiance.a);
+Vec4 ThinSlabLitFragment::main(const Fragment& frag) const {
+    Vec3 texel = flag_->sample(frag.varying(v_uv).xy()).xyz();
+    const Vec4& radiance = frag.varying(v_radiance);
+    return Vec4(radiance.xyz() * texel, radiance.w);
 }
 
 }  // namespace st

@@ -1,66 +1,89 @@
-// thin_slab_model.cpp: twin of glsl/thin_slab_model.glsl, line for line;
-// see the GLSL for the derivations. Literals are the GLSL's, as floats.
+// thin_slab_model.cpp: twin of glsl/thin_slab/thin_slab_model.glsl, line for
+// line; see the GLSL for the derivations. Literals are the GLSL's, as
+// floats. An `if` that returns on each side is glsl::select here (both sides
+// evaluated, each lane takes one), as NIR turns it into bcsel; the result is
+// the same for every lane.
 #include "kernels/thin_slab/thin_slab_model.h"
-
-#include <cmath>
 
 #include "shading/glsl_math.h"
 
 namespace st {
 
-float one_minus_exp_neg(float x) {
-    if (x < SERIES_LIMIT) {
-        return x * (1.0f - x * (0.5f - x * (0.16666667f - x * (0.041666668f - x * 0.0083333338f))));
-    }
-    return 1.0f - glsl::exp(-x);
+template <class F>
+F one_minus_exp_neg(F x) {
+    return glsl::select(x < F(SERIES_LIMIT),
+                  x * (F(1.0f) - x * (F(0.5f) - x * (F(0.16666667f) - x * (F(0.041666668f) - x * F(0.0083333338f))))),
+                  F(1.0f) - glsl::exp(-x));
 }
 
-float expm1_over_x(float d) {
-    return 1.0f + d * (0.5f + d * (0.16666667f + d * (0.041666668f + d * 0.0083333338f)));
+template <class F>
+F expm1_over_x(F d) {
+    return F(1.0f) + d * (F(0.5f) + d * (F(0.16666667f) + d * (F(0.041666668f) + d * F(0.0083333338f))));
 }
 
-float frontlit_factor(float tau1, float mu, float mu0) {
-    float x = tau1 * (mu + mu0) / (mu * mu0);
+template <class F>
+F frontlit_factor(F tau1, F mu, F mu0) {
+    F x = tau1 * (mu + mu0) / (mu * mu0);
     return mu0 / (mu + mu0) * one_minus_exp_neg(x);
 }
 
-float backlit_factor(float tau1, float mu, float mu0) {
-    float d = tau1 * (mu - mu0) / (mu * mu0);
-    if (std::abs(d) < SERIES_LIMIT) {
-        return tau1 / mu * glsl::exp(-tau1 / mu0) * expm1_over_x(d);
-    }
-    return mu0 / (mu - mu0) * (glsl::exp(-tau1 / mu) - glsl::exp(-tau1 / mu0));
+template <class F>
+F backlit_factor(F tau1, F mu, F mu0) {
+    F d = tau1 * (mu - mu0) / (mu * mu0);
+    return glsl::select(glsl::abs(d) < F(SERIES_LIMIT), tau1 / mu * glsl::exp(-tau1 / mu0) * expm1_over_x(d),
+                  mu0 / (mu - mu0) * (glsl::exp(-tau1 / mu) - glsl::exp(-tau1 / mu0)));
 }
 
-float point_light_irradiance(float power, float mu0, float r2) {
-    return power * INV_4PI * mu0 / r2;
+template <class F>
+F point_light_irradiance(F power, F mu0, F r2) {
+    return power * F(INV_4PI) * mu0 / r2;
 }
 
-SlabGeometry slab_geometry(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye, const glm::vec3& light) {
-    glm::vec3 to_light = light - p;
-    float r2 = std::fmax(glsl::dot(to_light, to_light), R2_MIN);
-    glm::vec3 l = to_light * glsl::inversesqrt(r2);
-    glm::vec3 w = glsl::normalize(eye - p);
-    float cos_l = glsl::dot(n, l);
-    float cos_v = glsl::dot(n, w);
-    return SlabGeometry{r2, std::fmax(std::abs(cos_l), MU_MIN), std::fmax(std::abs(cos_v), MU_MIN),
-                        (cos_l >= 0.0f) == (cos_v >= 0.0f)};
+template <class F>
+SlabGeometry<F> slab_geometry(const Vec3Of<F>& p, const Vec3Of<F>& n, const Vec3Of<F>& eye, const Vec3Of<F>& light) {
+    Vec3Of<F> to_light = light - p;
+    F r2 = glsl::max(glsl::dot(to_light, to_light), F(R2_MIN));
+    Vec3Of<F> l = to_light * glsl::inversesqrt(r2);
+    Vec3Of<F> w = glsl::normalize(eye - p);
+    F cos_l = glsl::dot(n, l);
+    F cos_v = glsl::dot(n, w);
+    return SlabGeometry<F>{r2, glsl::max(glsl::abs(cos_l), F(MU_MIN)), glsl::max(glsl::abs(cos_v), F(MU_MIN)),
+                           (cos_l >= F(0.0f)) == (cos_v >= F(0.0f))};
 }
 
-glm::vec4 thin_slab(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye, const glm::vec3& light,
-                    float power, float tau1, const glm::vec3& albedo) {
-    SlabGeometry g = slab_geometry(p, n, eye, light);
-    float factor = g.frontlit ? frontlit_factor(tau1, g.mu, g.mu0) : backlit_factor(tau1, g.mu, g.mu0);
-    float radiance = point_light_irradiance(power, g.mu0, g.r2) * INV_4PI * factor;
-    float alpha = glsl::exp(-tau1 / g.mu);
-    return glm::vec4(albedo * radiance, alpha);
+template <class F>
+Vec4Of<F> thin_slab(const Vec3Of<F>& p, const Vec3Of<F>& n, const Vec3Of<F>& eye, const Vec3Of<F>& light, F power,
+                    F tau1, const Vec3Of<F>& albedo) {
+    SlabGeometry<F> g = slab_geometry<F>(p, n, eye, light);
+    F factor = glsl::select(g.frontlit, frontlit_factor(tau1, g.mu, g.mu0), backlit_factor(tau1, g.mu, g.mu0));
+    F radiance = point_light_irradiance(power, g.mu0, g.r2) * F(INV_4PI) * factor;
+    F alpha = glsl::exp(-tau1 / g.mu);
+    return Vec4Of<F>(albedo * radiance, alpha);
 }
 
-glm::vec3 lambert_baseline(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye,
-                           const glm::vec3& light, float power, const glm::vec3& albedo) {
-    SlabGeometry g = slab_geometry(p, n, eye, light);
-    float radiance = g.frontlit ? point_light_irradiance(power, g.mu0, g.r2) * INV_PI : 0.0f;
+template <class F>
+Vec3Of<F> lambert_baseline(const Vec3Of<F>& p, const Vec3Of<F>& n, const Vec3Of<F>& eye, const Vec3Of<F>& light,
+                           F power, const Vec3Of<F>& albedo) {
+    SlabGeometry<F> g = slab_geometry<F>(p, n, eye, light);
+    F radiance = glsl::select(g.frontlit, point_light_irradiance(power, g.mu0, g.r2) * F(INV_PI), F(0.0f));
     return albedo * radiance;
 }
+
+// Both number types, for every function above.
+#define ST_THIN_SLAB_MODEL(F)                                                                            \
+    template F one_minus_exp_neg<F>(F);                                                                  \
+    template F expm1_over_x<F>(F);                                                                       \
+    template F frontlit_factor<F>(F, F, F);                                                              \
+    template F backlit_factor<F>(F, F, F);                                                               \
+    template F point_light_irradiance<F>(F, F, F);                                                       \
+    template SlabGeometry<F> slab_geometry<F>(const Vec3Of<F>&, const Vec3Of<F>&, const Vec3Of<F>&,      \
+                                              const Vec3Of<F>&);                                         \
+    template Vec4Of<F> thin_slab<F>(const Vec3Of<F>&, const Vec3Of<F>&, const Vec3Of<F>&, const Vec3Of<F>&, \
+                                    F, F, const Vec3Of<F>&);                                             \
+    template Vec3Of<F> lambert_baseline<F>(const Vec3Of<F>&, const Vec3Of<F>&, const Vec3Of<F>&,        \
+                                           const Vec3Of<F>&, F, const Vec3Of<F>&);
+ST_THIN_SLAB_MODEL(float)
+ST_THIN_SLAB_MODEL(Float)
+#undef ST_THIN_SLAB_MODEL
 
 }  // namespace st

@@ -1,10 +1,11 @@
-// thin_slab_model.h: twin of glsl/thin_slab_model.glsl (Frisvad et al.,
-// Eq. 4-9), function for function. Also what the host variant evaluates per
-// vertex on the CPU, and what the unit tests check against analytic values.
+// thin_slab_model.h: twin of glsl/thin_slab/thin_slab_model.glsl (Frisvad et
+// al., Eq. 4-9), function for function. Each function is written once for
+// F = float (the vertex variant, the host variant's per-vertex evaluation,
+// the unit tests) and F = Float (the fragment twins, all lanes at once);
+// thin_slab_model.cpp instantiates both.
 #pragma once
 
-#include <glm/vec3.hpp>
-#include <glm/vec4.hpp>
+#include "simd/lane_vec.h"
 
 namespace st {
 
@@ -14,19 +15,22 @@ inline constexpr float MU_MIN = 1.0e-6f;
 inline constexpr float R2_MIN = 1.0e-12f;
 inline constexpr float SERIES_LIMIT = 0.125f;
 
-float one_minus_exp_neg(float x);
-float expm1_over_x(float d);
-float frontlit_factor(float tau1, float mu, float mu0);   // Eq. 4 bracket
-float backlit_factor(float tau1, float mu, float mu0);    // Eq. 5 bracket
-float point_light_irradiance(float power, float mu0, float r2);  // Eq. 6
-struct SlabGeometry {  // the GLSL struct of the same name
-    float r2, mu0, mu;
-    bool frontlit;
+template <class F> F one_minus_exp_neg(F x);
+template <class F> F expm1_over_x(F d);
+template <class F> F frontlit_factor(F tau1, F mu, F mu0);   // Eq. 4 bracket
+template <class F> F backlit_factor(F tau1, F mu, F mu0);    // Eq. 5 bracket
+template <class F> F point_light_irradiance(F power, F mu0, F r2);  // Eq. 6
+template <class F> struct SlabGeometry {  // the GLSL struct of the same name
+    F r2, mu0, mu;
+    BoolOf<F> frontlit;
 };
-SlabGeometry slab_geometry(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye, const glm::vec3& light);
-glm::vec4 thin_slab(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye, const glm::vec3& light,
-                    float power, float tau1, const glm::vec3& albedo);  // Eq. 7/8 + alpha (Eq. 9)
-glm::vec3 lambert_baseline(const glm::vec3& p, const glm::vec3& n, const glm::vec3& eye,
-                           const glm::vec3& light, float power, const glm::vec3& albedo);
+template <class F>
+SlabGeometry<F> slab_geometry(const Vec3Of<F>& p, const Vec3Of<F>& n, const Vec3Of<F>& eye, const Vec3Of<F>& light);
+template <class F>  // Eq. 7/8 + alpha (Eq. 9)
+Vec4Of<F> thin_slab(const Vec3Of<F>& p, const Vec3Of<F>& n, const Vec3Of<F>& eye, const Vec3Of<F>& light,
+                    F power, F tau1, const Vec3Of<F>& albedo);
+template <class F>
+Vec3Of<F> lambert_baseline(const Vec3Of<F>& p, const Vec3Of<F>& n, const Vec3Of<F>& eye, const Vec3Of<F>& light,
+                           F power, const Vec3Of<F>& albedo);
 
 }  // namespace st

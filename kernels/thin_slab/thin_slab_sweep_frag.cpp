@@ -10,12 +10,12 @@ namespace st {
 
 void ThinSlabSweepFragment::bind(const Bindings& b) { inputs_ = &b.sampler("inputs"); }
 
-glm::vec4 ThinSlabSweepFragment::main(const Fragment& frag) const {
-    glm::vec4 p = inputs_->fetch(int(frag.frag_coord().x), int(frag.frag_coord().y));
-    float mu = std::fmax(p.g, MU_MIN);
-    float mu0 = std::fmax(p.b, MU_MIN);
-    return glm::vec4(frontlit_factor(p.r, mu, mu0), backlit_factor(p.r, mu, mu0), glsl::exp(-p.r / mu),
-                     one_minus_exp_neg(p.r));
+Vec4 ThinSlabSweepFragment::main(const Fragment& frag) const {
+    Vec4 p = inputs_->fetch(simd::itrunc(frag.frag_coord().x), simd::itrunc(frag.frag_coord().y));
+    Float mu = glsl::max(p.y, Float(MU_MIN));
+    Float mu0 = glsl::max(p.z, Float(MU_MIN));
+    return Vec4(frontlit_factor(p.x, mu, mu0), backlit_factor(p.x, mu, mu0), glsl::exp(-p.x / mu),
+                one_minus_exp_neg(p.x));
 }
 
 }  // namespace st

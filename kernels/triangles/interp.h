@@ -11,9 +11,9 @@ public:
     void run(const glm::vec4* attributes, VertexOut& out) const override;
 };
 
-class InterpFragment final : public ScalarFragmentTwin<InterpFragment> {
+class InterpFragment final : public FragmentProgram<InterpFragment> {
 public:
-    glm::vec4 main(const Fragment& frag) const;
+    Vec4 main(const Fragment& frag) const;
 };
 
 }  // namespace st

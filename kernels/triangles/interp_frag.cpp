@@ -7,7 +7,7 @@ namespace {
 constexpr int v_colour = 0;  // layout(location = 0) in vec4 v_colour
 }  // namespace
 
-glm::vec4 InterpFragment::main(const Fragment& frag) const {
+Vec4 InterpFragment::main(const Fragment& frag) const {
     return frag.varying(v_colour);
 }
 

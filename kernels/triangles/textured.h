@@ -11,10 +11,10 @@ public:
     void run(const glm::vec4* attributes, VertexOut& out) const override;
 };
 
-class TexturedFragment final : public ScalarFragmentTwin<TexturedFragment> {
+class TexturedFragment final : public FragmentProgram<TexturedFragment> {
 public:
     void bind(const Bindings& b) override { tex_ = &b.sampler("tex"); }
-    glm::vec4 main(const Fragment& frag) const;
+    Vec4 main(const Fragment& frag) const;
 
 private:
     const Sampler2D* tex_ = nullptr;  // uniform sampler2D tex

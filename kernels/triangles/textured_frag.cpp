@@ -9,8 +9,8 @@ namespace {
 constexpr int v_colour = 0, v_uv = 1;  // inputs
 }  // namespace
 
-glm::vec4 TexturedFragment::main(const Fragment& frag) const {
-    return frag.varying(v_colour) * tex_->sample(glm::vec2(frag.varying(v_uv)));
+Vec4 TexturedFragment::main(const Fragment& frag) const {
+    return frag.varying(v_colour) * tex_->sample(frag.varying(v_uv).xy());
 }
 
 }  // namespace st

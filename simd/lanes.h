@@ -1,0 +1,235 @@
+// lanes.h: the lane vocabulary of the shading runtime. A `Float` holds one
+// float per lane, an `Int` one int32, a `Mask` one bool; a fragment twin
+// computes on them as a GLSL shader computes on one invocation, and every
+// lane rounds exactly as a scalar float would (IEEE per lane, no fusing,
+// nothing across lanes except where a function says so).
+//
+// kLanes is fixed per build (ST_LANES, chosen by CMake from the widest
+// vectors the build machine has: 16 with AVX-512, else 8);
+// results do not depend on it (docs/shading-runtime.md says why and how it
+// is tested). The types are GCC/Clang vector extensions, so the same source
+// compiles to zmm, ymm or xmm registers, or to plain loops elsewhere; the
+// few operations the compiler would not map to one instruction have
+// intrinsics below, each with its portable form beside it.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
+#ifndef ST_LANES
+#define ST_LANES 8
+#endif
+
+namespace st::simd {
+
+inline constexpr int kLanes = ST_LANES;
+// At least 8: llvmpipe runs loops over 8-lane vectors, and a value read after
+// a loop comes from its vector's last pass (docs/llvmpipe/lanes-and-control-flow.md),
+// so a twin must see whole 8-lane groups to reproduce it.
+static_assert(kLanes == 8 || kLanes == 16, "lanes come in 8-lane groups, at most a 4x4 block");
+
+#define ST_INLINE inline __attribute__((always_inline))
+
+using FloatV = float __attribute__((vector_size(kLanes * 4)));
+using IntV = int32_t __attribute__((vector_size(kLanes * 4)));
+
+// Which instructions this build may use for a whole vector of kLanes.
+#if ST_LANES == 16 && defined(__AVX512F__) && defined(__AVX512DQ__)
+#define ST_SIMD_AVX512 1
+#elif ST_LANES == 8 && defined(__AVX2__) && defined(__FMA__)
+#define ST_SIMD_AVX2 1
+#endif
+
+struct Mask;
+struct Int;
+
+// One float per lane.
+struct Float {
+    FloatV v;
+
+    Float() : v{} {}
+    Float(float s) {  // broadcast, as GLSL promotes a constant (no arithmetic: a denormal stays)
+        for (int i = 0; i < kLanes; ++i) v[i] = s;
+    }
+    explicit Float(FloatV x) : v(x) {}
+
+    static Float load(const float* p) {
+        Float r;
+        std::memcpy(&r.v, p, sizeof r.v);
+        return r;
+    }
+    void store(float* p) const { std::memcpy(p, &v, sizeof v); }
+    float operator[](int lane) const { return v[lane]; }
+    void set(int lane, float x) { v[lane] = x; }
+};
+
+// One int32 per lane. Arithmetic wraps modulo 2^32 (done in unsigned
+// lanes, so there is no signed overflow); shifts take counts in [0, 31].
+struct Int {
+    IntV v;
+
+    Int() : v{} {}
+    Int(int32_t s) {
+        for (int i = 0; i < kLanes; ++i) v[i] = s;
+    }
+    explicit Int(IntV x) : v(x) {}
+
+    int32_t operator[](int lane) const { return v[lane]; }
+    void set(int lane, int32_t x) { v[lane] = x; }
+};
+
+// One bool per lane, held as all-ones or zero.
+struct Mask {
+    IntV v;
+
+    Mask() : v{} {}
+    explicit Mask(IntV x) : v(x) {}
+    explicit Mask(bool b) {
+        for (int i = 0; i < kLanes; ++i) v[i] = b ? -1 : 0;
+    }
+    // Bit i of `bits` is lane i.
+    static Mask from_bits(unsigned bits) {
+        IntV lane_bit;
+        for (int i = 0; i < kLanes; ++i) lane_bit[i] = int32_t(1u << i);
+        return Mask((lane_bit & int32_t(bits)) != 0);
+    }
+    bool operator[](int lane) const { return v[lane] != 0; }
+};
+
+ST_INLINE Float operator+(Float a, Float b) { return Float(a.v + b.v); }
+ST_INLINE Float operator-(Float a, Float b) { return Float(a.v - b.v); }
+ST_INLINE Float operator*(Float a, Float b) { return Float(a.v * b.v); }
+ST_INLINE Float operator/(Float a, Float b) { return Float(a.v / b.v); }
+ST_INLINE Float operator-(Float a) { return Float(-a.v); }
+ST_INLINE Float& operator+=(Float& a, Float b) { return a = a + b; }
+ST_INLINE Float& operator-=(Float& a, Float b) { return a = a - b; }
+ST_INLINE Float& operator*=(Float& a, Float b) { return a = a * b; }
+ST_INLINE Float& operator/=(Float& a, Float b) { return a = a / b; }
+
+// Comparisons are IEEE: every ordered comparison with a NaN is false.
+ST_INLINE Mask operator<(Float a, Float b) { return Mask(a.v < b.v); }
+ST_INLINE Mask operator<=(Float a, Float b) { return Mask(a.v <= b.v); }
+ST_INLINE Mask operator>(Float a, Float b) { return Mask(a.v > b.v); }
+ST_INLINE Mask operator>=(Float a, Float b) { return Mask(a.v >= b.v); }
+ST_INLINE Mask operator==(Float a, Float b) { return Mask(a.v == b.v); }
+ST_INLINE Mask operator!=(Float a, Float b) { return Mask(a.v != b.v); }
+
+ST_INLINE Mask operator&&(Mask a, Mask b) { return Mask(a.v & b.v); }
+ST_INLINE Mask operator||(Mask a, Mask b) { return Mask(a.v | b.v); }
+ST_INLINE Mask operator!(Mask a) { return Mask(~a.v); }
+ST_INLINE Mask operator==(Mask a, Mask b) { return Mask(a.v == b.v); }
+ST_INLINE Mask and_not(Mask a, Mask b) { return Mask(a.v & ~b.v); }
+
+ST_INLINE Int operator+(Int a, Int b) {
+    using UV = uint32_t __attribute__((vector_size(kLanes * 4)));
+    return Int(IntV(UV(a.v) + UV(b.v)));
+}
+ST_INLINE Int operator-(Int a, Int b) {
+    using UV = uint32_t __attribute__((vector_size(kLanes * 4)));
+    return Int(IntV(UV(a.v) - UV(b.v)));
+}
+ST_INLINE Int operator*(Int a, Int b) {
+    using UV = uint32_t __attribute__((vector_size(kLanes * 4)));
+    return Int(IntV(UV(a.v) * UV(b.v)));
+}
+ST_INLINE Int operator&(Int a, Int b) { return Int(a.v & b.v); }
+ST_INLINE Int operator|(Int a, Int b) { return Int(a.v | b.v); }
+ST_INLINE Int operator<<(Int a, int n) {
+    using UV = uint32_t __attribute__((vector_size(kLanes * 4)));
+    return Int(IntV(UV(a.v) << n));
+}
+ST_INLINE Int operator>>(Int a, int n) { return Int(a.v >> n); }  // arithmetic
+ST_INLINE Mask operator<(Int a, Int b) { return Mask(a.v < b.v); }
+ST_INLINE Mask operator>(Int a, Int b) { return Mask(a.v > b.v); }
+ST_INLINE Mask operator==(Int a, Int b) { return Mask(a.v == b.v); }
+ST_INLINE Mask operator!=(Int a, Int b) { return Mask(a.v != b.v); }
+
+// GLSL's b ? x : y per lane (NIR bcsel).
+ST_INLINE Float select(Mask m, Float a, Float b) { return Float(m.v ? a.v : b.v); }
+ST_INLINE Int select(Mask m, Int a, Int b) { return Int(m.v ? a.v : b.v); }
+ST_INLINE Mask select(Mask m, Mask a, Mask b) { return Mask(m.v ? a.v : b.v); }
+
+ST_INLINE bool any(Mask m) {
+    IntV x = m.v;
+    int32_t r = 0;
+    for (int i = 0; i < kLanes; ++i) r |= x[i];
+    return r != 0;
+}
+ST_INLINE bool all(Mask m) { return !any(!m); }
+ST_INLINE bool none(Mask m) { return !any(m); }
+ST_INLINE unsigned bits(Mask m) {
+    unsigned r = 0;
+    for (int i = 0; i < kLanes; ++i) r |= unsigned(m.v[i] != 0) << i;
+    return r;
+}
+
+ST_INLINE Int bit_cast_int(Float x) { return Int(IntV(x.v)); }
+ST_INLINE Float bit_cast_float(Int x) { return Float(FloatV(x.v)); }
+
+// Fused multiply-add, one rounding: llvmpipe's lp_build_mad on an FMA host.
+ST_INLINE Float fma(Float a, Float b, Float c) {
+#if defined(ST_SIMD_AVX512)
+    return Float(FloatV(_mm512_fmadd_ps(__m512(a.v), __m512(b.v), __m512(c.v))));
+#elif defined(ST_SIMD_AVX2)
+    return Float(FloatV(_mm256_fmadd_ps(__m256(a.v), __m256(b.v), __m256(c.v))));
+#else
+    Float r;
+    for (int i = 0; i < kLanes; ++i) r.v[i] = __builtin_fmaf(a.v[i], b.v[i], c.v[i]);
+    return r;
+#endif
+}
+
+ST_INLINE Float sqrt(Float x) {
+    Float r;
+    for (int i = 0; i < kLanes; ++i) r.v[i] = __builtin_sqrtf(x.v[i]);
+    return r;
+}
+
+// Round toward -infinity (roundps 1, as llvm.floor).
+ST_INLINE Float floor(Float x) {
+#if defined(ST_SIMD_AVX512)
+    return Float(FloatV(_mm512_roundscale_ps(__m512(x.v), _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)));
+#elif defined(ST_SIMD_AVX2)
+    return Float(FloatV(_mm256_round_ps(__m256(x.v), _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)));
+#else
+    Float r;
+    for (int i = 0; i < kLanes; ++i) r.v[i] = __builtin_floorf(x.v[i]);
+    return r;
+#endif
+}
+
+ST_INLINE Float abs(Float x) { return bit_cast_float(bit_cast_int(x) & Int(0x7fffffff)); }
+
+// fmax/fmin semantics: a NaN operand yields the other operand (as
+// std::fmax, and as the scalar twins have always computed max()).
+ST_INLINE Float max(Float a, Float b) {
+    const Float larger = select(a < b, b, a);  // NaN in a or b: a
+    return select(a != a, b, larger);
+}
+ST_INLINE Float min(Float a, Float b) {
+    const Float smaller = select(b < a, b, a);
+    return select(a != a, b, smaller);
+}
+
+ST_INLINE Mask isnan(Float x) { return x != x; }
+
+// float -> int32 truncating toward zero, with the x86 answer for what C++
+// leaves undefined: NaN and values outside [-2^31, 2^31) give INT32_MIN
+// (cvttps2dq, which is what llvmpipe's fptosi compiles to).
+ST_INLINE Int itrunc(Float x) {
+    const Mask in_range = (x >= Float(-2147483648.0f)) && (x < Float(2147483648.0f));
+    const Float safe = select(in_range, x, Float(0.0f));
+    const Int r(__builtin_convertvector(safe.v, IntV));
+    return select(in_range, r, Int(INT32_MIN));
+}
+
+ST_INLINE Float to_float(Int x) { return Float(__builtin_convertvector(x.v, FloatV)); }
+
+// Lane i of the result is lane idx[i] of x: the quad shuffles behind dFdx.
+ST_INLINE Float shuffle(Float x, IntV idx) { return Float(__builtin_shuffle(x.v, idx)); }
+
+}  // namespace st::simd
