@@ -223,15 +223,11 @@ void CpuRenderer::Impl::shade_tile(int tile, int worker, std::vector<PreparedDra
         const auto t2 = Clock::now();
 
         const DrawState& state = d.call->state;
-        for (const ShadedPart& sp : s.shaded)
-            for (int lane = 0; lane < kLanes; ++lane) {
-                if (!(sp.live >> lane & 1)) continue;
-                const int block_lane = sp.part * kLanes + lane;
-                const size_t p = fb.index(sp.x + block_lane_x(block_lane), sp.y + block_lane_y(block_lane));
-                if (!depth_test(state, sp.depth[lane], fb.depth[p])) continue;
-                const glm::vec4 src(sp.colour.x[lane], sp.colour.y[lane], sp.colour.z[lane], sp.colour.w[lane]);
-                fb.colour[p] = blend(state.blend, src, fb.colour[p]);
-            }
+        for (const ShadedPart& sp : s.shaded) {
+            const size_t b = fb.block(sp.x, sp.y);
+            merge_lanes(state, sp.colour, sp.depth, Mask::from_bits(sp.live), fb.block_colour(b) + sp.part * kLanes,
+                        kBlockLanes, fb.block_depth(b) + sp.part * kLanes);
+        }
         const auto t3 = Clock::now();
         s.times.raster_ms += ms_between(t0, t1);
         s.times.fragment_ms += ms_between(t1, t2);

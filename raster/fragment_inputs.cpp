@@ -5,22 +5,30 @@ namespace st {
 
 namespace {
 
-Float at(const Plane& p, Float px, Float py) {
+ST_INLINE Float at(const Plane& p, Float px, Float py) {
     return simd::fma(Float(p.dady), py, simd::fma(Float(p.dadx), px, Float(p.a0)));
 }
 
 }  // namespace
 
+// Each lane's pixel offset inside the block, as floats (exact).
+struct LaneOffsets {
+    float x[kBlockLanes], y[kBlockLanes];
+    constexpr LaneOffsets() : x(), y() {
+        for (int lane = 0; lane < kBlockLanes; ++lane) {
+            x[lane] = float(block_lane_x(lane));
+            y[lane] = float(block_lane_y(lane));
+        }
+    }
+};
+constexpr LaneOffsets kLaneOffsets;
+
 Float lane_pixel_x(int block_x, int part) {
-    Float x;
-    for (int lane = 0; lane < kLanes; ++lane) x.set(lane, float(block_x + block_lane_x(part * kLanes + lane)));
-    return x;
+    return Float(float(block_x)) + Float::load(kLaneOffsets.x + part * kLanes);
 }
 
 Float lane_pixel_y(int block_y, int part) {
-    Float y;
-    for (int lane = 0; lane < kLanes; ++lane) y.set(lane, float(block_y + block_lane_y(part * kLanes + lane)));
-    return y;
+    return Float(float(block_y)) + Float::load(kLaneOffsets.y + part * kLanes);
 }
 
 void interpolate_lanes(const Plane* planes, int varying_count, const BlockCoverage& block, int part,

@@ -1,41 +1,59 @@
-// output_merge.h: depth test and blending of one shaded fragment into the
-// framebuffer (the "blending/output" stage).
+// output_merge.h: depth test and blending of shaded fragments into the
+// framebuffer (the "blending/output" stage), a whole part of a block (kLanes
+// lanes) at a time, straight on the framebuffer's block layout.
 #pragma once
 
 #include <glm/vec4.hpp>
 
 #include "frame/frame.h"
+#include "simd/lane_vec.h"
 
 namespace st {
-
-// GL_LESS against a float depth buffer. Returns whether the fragment passes.
-inline bool depth_test(const DrawState& state, float z, float& stored) {
-    if (!state.depth_test) return true;
-    if (!(z < stored)) return false;
-    if (state.depth_write) stored = z;
-    return true;
-}
 
 // Blend equation GL_FUNC_ADD with unclamped float operands, as for an
 // RGBA32F target: dst = src * sfactor + dst * dfactor, each product rounded
 // and then summed, 1 - As rounded on its own. Measured against llvmpipe:
 // the triangles-alpha-blend and triangles-large scenes are bit-identical
 // with this form and differ with the lerp form fma(As, src - dst, dst) that
-// a reading of lp_bld_blend.c suggested (docs/llvmpipe/).
-inline glm::vec4 blend(BlendMode mode, const glm::vec4& src, const glm::vec4& dst) {
+// a reading of lp_bld_blend.c suggested (docs/llvmpipe/). Written once for
+// one pixel (glm::vec4) and for lanes (Vec4).
+template <class V>
+inline V blend(BlendMode mode, const V& src, const V& dst) {
     switch (mode) {
         case BlendMode::None: return src;
         case BlendMode::OneSrcAlpha: {
-            const float sa = src.a;
-            return {src.r + dst.r * sa, src.g + dst.g * sa, src.b + dst.b * sa, src.a + dst.a * sa};
+            const auto sa = src.w;
+            return V(src.x + dst.x * sa, src.y + dst.y * sa, src.z + dst.z * sa, src.w + dst.w * sa);
         }
         case BlendMode::SrcAlphaOneMinusSrcAlpha: {
-            const float sa = src.a, one_minus_sa = 1.0f - src.a;
-            return {src.r * sa + dst.r * one_minus_sa, src.g * sa + dst.g * one_minus_sa,
-                    src.b * sa + dst.b * one_minus_sa, src.a * sa + dst.a * one_minus_sa};
+            const auto sa = src.w;
+            const auto one_minus_sa = decltype(sa)(1.0f) - src.w;
+            return V(src.x * sa + dst.x * one_minus_sa, src.y * sa + dst.y * one_minus_sa,
+                     src.z * sa + dst.z * one_minus_sa, src.w * sa + dst.w * one_minus_sa);
         }
     }
     return src;
+}
+
+// Depth test (GL_LESS against the float depth buffer, written when
+// depth_write) and blending of the lanes in `live`. `colour` points at the
+// part's first lane of channel 0 in a framebuffer block, channels
+// `channel_stride` floats apart; `depth` at the part's first depth value.
+inline void merge_lanes(const DrawState& state, const Vec4& src, Float z, Mask live, float* colour,
+                        int channel_stride, float* depth) {
+    Mask pass = live;
+    if (state.depth_test) {
+        const Float stored = Float::load(depth);
+        pass = pass && z < stored;
+        if (state.depth_write) select(pass, z, stored).store(depth);
+    }
+    const Vec4 dst(Float::load(colour), Float::load(colour + channel_stride), Float::load(colour + 2 * channel_stride),
+                   Float::load(colour + 3 * channel_stride));
+    const Vec4 out = select(pass, blend(state.blend, src, dst), dst);
+    out.x.store(colour);
+    out.y.store(colour + channel_stride);
+    out.z.store(colour + 2 * channel_stride);
+    out.w.store(colour + 3 * channel_stride);
 }
 
 }  // namespace st

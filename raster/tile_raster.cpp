@@ -16,9 +16,26 @@ void rasterize_in_tile(const SetupTriangle& tri, const TileRect& tile, std::vect
     for (int i = 0; i < 3; ++i)
         for (int lane = 0; lane < kBlockLanes; ++lane)
             lane_offset[i][lane] = e[i].dcdx * block_lane_x(lane) + e[i].dcdy * block_lane_y(lane);
+    // Over a block an edge function ranges from its corner value plus the
+    // negative steps to the corner value plus the positive ones (it is
+    // linear): a block all inside every edge and the box needs no per-pixel
+    // test, one outside an edge none either.
+    int64_t lo[3], hi[3];
+    for (int i = 0; i < 3; ++i) {
+        lo[i] = std::min<int64_t>(0, 3 * e[i].dcdx) + std::min<int64_t>(0, 3 * e[i].dcdy);
+        hi[i] = std::max<int64_t>(0, 3 * e[i].dcdx) + std::max<int64_t>(0, 3 * e[i].dcdy);
+    }
     for (int y = y_lo; y <= y_hi; y += kBlockSize) {
         int64_t row[3] = {e[0].at(x_lo, y), e[1].at(x_lo, y), e[2].at(x_lo, y)};
-        for (int x = x_lo; x <= x_hi; x += kBlockSize) {
+        const bool rows_inside = y >= tri.y_min && y + kBlockSize - 1 <= y_hi;
+        for (int x = x_lo; x <= x_hi; x += kBlockSize, row[0] += kBlockSize * e[0].dcdx,
+                 row[1] += kBlockSize * e[1].dcdx, row[2] += kBlockSize * e[2].dcdx) {
+            if (row[0] + hi[0] <= 0 || row[1] + hi[1] <= 0 || row[2] + hi[2] <= 0) continue;
+            if (rows_inside && x >= tri.x_min && x + kBlockSize - 1 <= x_hi && row[0] + lo[0] > 0 &&
+                row[1] + lo[1] > 0 && row[2] + lo[2] > 0) {
+                out.push_back({x, y, 0xffff});
+                continue;
+            }
             unsigned mask = 0;
             for (int lane = 0; lane < kBlockLanes; ++lane) {
                 const int px = x + block_lane_x(lane), py = y + block_lane_y(lane);
@@ -27,7 +44,6 @@ void rasterize_in_tile(const SetupTriangle& tri, const TileRect& tile, std::vect
                 mask |= unsigned(inside) << lane;
             }
             if (mask) out.push_back({x, y, mask});
-            for (int i = 0; i < 3; ++i) row[i] += kBlockSize * e[i].dcdx;
         }
     }
 }

@@ -14,5 +14,7 @@ inline constexpr int kBlockLanes = 16;  // lanes of a whole block
 
 constexpr int block_lane_x(int lane) { return ((lane >> 2) & 1) * 2 + (lane & 1); }
 constexpr int block_lane_y(int lane) { return (lane >> 3) * 2 + ((lane >> 1) & 1); }
+// The lane of the pixel at (dx, dy) inside its block.
+constexpr int block_lane(int dx, int dy) { return (dy >> 1) * 8 + (dx >> 1) * 4 + (dy & 1) * 2 + (dx & 1); }
 
 }  // namespace st

@@ -227,7 +227,56 @@ ST_INLINE Int itrunc(Float x) {
     return select(in_range, r, Int(INT32_MIN));
 }
 
+// float -> int32 rounding to nearest, ties to even (cvtps2dq, llvmpipe's
+// lp_build_iround); NaN and values outside [-2^31, 2^31) give INT32_MIN.
+ST_INLINE Int iround(Float x) {
+#if defined(ST_SIMD_AVX512)
+    return Int(IntV(_mm512_cvtps_epi32(__m512(x.v))));
+#elif defined(ST_SIMD_AVX2)
+    const Int r(IntV(_mm256_cvtps_epi32(__m256(x.v))));
+    return r;
+#else
+    const Mask in_range = (x >= Float(-2147483648.0f)) && (x < Float(2147483648.0f));
+    Float rounded;
+    for (int i = 0; i < kLanes; ++i) rounded.v[i] = __builtin_nearbyintf(x.v[i]);
+    const Int r(__builtin_convertvector(select(in_range, rounded, Float(0.0f)).v, IntV));
+    return select(in_range, r, Int(INT32_MIN));
+#endif
+}
+
 ST_INLINE Float to_float(Int x) { return Float(__builtin_convertvector(x.v, FloatV)); }
+
+ST_INLINE Int min(Int a, Int b) { return select(a < b, a, b); }
+ST_INLINE Int max(Int a, Int b) { return select(a < b, b, a); }
+ST_INLINE Int clamp(Int x, Int lo, Int hi) { return min(max(x, lo), hi); }
+
+// base[index] per active lane, 0 on the others; inactive lanes read nothing.
+ST_INLINE Int gather(const int32_t* base, Int index, Mask active) {
+#if defined(ST_SIMD_AVX512)
+    const __mmask16 k = _mm512_movepi32_mask(__m512i(active.v));
+    return Int(IntV(_mm512_mask_i32gather_epi32(_mm512_setzero_si512(), k, __m512i(index.v), base, 4)));
+#elif defined(ST_SIMD_AVX2)
+    return Int(IntV(_mm256_mask_i32gather_epi32(_mm256_setzero_si256(), reinterpret_cast<const int*>(base),
+                                                __m256i(index.v), __m256i(active.v), 4)));
+#else
+    Int r;
+    for (int i = 0; i < kLanes; ++i) r.v[i] = active.v[i] ? base[index.v[i]] : 0;
+    return r;
+#endif
+}
+ST_INLINE Float gather(const float* base, Int index, Mask active) {
+#if defined(ST_SIMD_AVX512)
+    const __mmask16 k = _mm512_movepi32_mask(__m512i(active.v));
+    return Float(FloatV(_mm512_mask_i32gather_ps(_mm512_setzero_ps(), k, __m512i(index.v), base, 4)));
+#elif defined(ST_SIMD_AVX2)
+    return Float(FloatV(_mm256_mask_i32gather_ps(_mm256_setzero_ps(), base, __m256i(index.v),
+                                                 __m256(active.v), 4)));
+#else
+    Float r;
+    for (int i = 0; i < kLanes; ++i) r.v[i] = active.v[i] ? base[index.v[i]] : 0.0f;
+    return r;
+#endif
+}
 
 // Lane i of the result is lane idx[i] of x: the quad shuffles behind dFdx.
 ST_INLINE Float shuffle(Float x, IntV idx) { return Float(__builtin_shuffle(x.v, idx)); }

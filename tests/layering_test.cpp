@@ -35,7 +35,7 @@ const std::map<std::string, std::set<std::string>>& allowed() {
         {"app", {"frame", "image", "simd", "texture", "shading", "raster", "kernels", "gl", "scene", "reference",
                  "optics"}},
         {"bench", {"frame", "image", "simd", "texture", "shading", "raster", "kernels", "gl", "scene", "app"}},
-        {"tests", {}},
+        {"tests", {"frame", "image", "simd", "texture", "shading", "raster", "kernels", "gl", "scene", "app"}},
     };
     return table;
 }

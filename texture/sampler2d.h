@@ -19,8 +19,8 @@ public:
     // GLSL texelFetch(sampler2D, ivec2, 0); out-of-range texels return 0.
     glm::vec4 fetch(int x, int y) const;
 
-    // The same for every lane of a fragment twin at once, lane for lane
-    // equal to the calls above.
+    // The same for every lane of a fragment twin at once; the calls above
+    // are one lane of these.
     Vec4 sample(const Vec2& st) const;
     Vec4 fetch(Int x, Int y) const;
 
@@ -28,9 +28,9 @@ public:
     int height() const { return tex_->height; }
 
 private:
-    glm::vec4 sample_nearest(const glm::vec2& st) const;
-    glm::vec4 sample_linear_float(const glm::vec2& st) const;
-    glm::vec4 sample_linear_unorm8(const glm::vec2& st) const;
+    Vec4 sample_nearest(const Vec2& st) const;
+    Vec4 sample_linear_float(const Vec2& st) const;
+    Vec4 sample_linear_unorm8(const Vec2& st) const;
 
     const Texture* tex_;
 };
