@@ -47,14 +47,20 @@ using IntV = int32_t __attribute__((vector_size(kLanes * 4)));
 struct Mask;
 struct Int;
 
+// {s, s, ..., s}: a splat the compiler sees as one (a loop of lane stores
+// became 16 masked broadcasts).
+#if ST_LANES == 16
+#define ST_SPLAT(s) {s, s, s, s, s, s, s, s, s, s, s, s, s, s, s, s}
+#else
+#define ST_SPLAT(s) {s, s, s, s, s, s, s, s}
+#endif
+
 // One float per lane.
 struct Float {
     FloatV v;
 
     Float() : v{} {}
-    Float(float s) {  // broadcast, as GLSL promotes a constant (no arithmetic: a denormal stays)
-        for (int i = 0; i < kLanes; ++i) v[i] = s;
-    }
+    Float(float s) : v(FloatV ST_SPLAT(s)) {}  // broadcast, as GLSL promotes a constant
     explicit Float(FloatV x) : v(x) {}
 
     static Float load(const float* p) {
@@ -73,9 +79,7 @@ struct Int {
     IntV v;
 
     Int() : v{} {}
-    Int(int32_t s) {
-        for (int i = 0; i < kLanes; ++i) v[i] = s;
-    }
+    Int(int32_t s) : v(IntV ST_SPLAT(s)) {}
     explicit Int(IntV x) : v(x) {}
 
     int32_t operator[](int lane) const { return v[lane]; }
@@ -88,9 +92,7 @@ struct Mask {
 
     Mask() : v{} {}
     explicit Mask(IntV x) : v(x) {}
-    explicit Mask(bool b) {
-        for (int i = 0; i < kLanes; ++i) v[i] = b ? -1 : 0;
-    }
+    explicit Mask(bool b) : v(IntV ST_SPLAT(b ? -1 : 0)) {}
     // Bit i of `bits` is lane i.
     static Mask from_bits(unsigned bits) {
         IntV lane_bit;
