@@ -89,10 +89,10 @@ BENCHMARK(BM_RasterizeTile);
 void BM_InterpolateBlock(benchmark::State& state) {
     std::vector<Plane> planes(2 + 12, Plane{0.5f, 0.01f, 0.02f});
     FragmentLanes lanes;
-    const BlockCoverage block{100, 200, 0xffff};
+    LaneGroup groups[2] = {{100, 200, 0, 0xff}, {100, 200, 1, 0xff}};
     for (auto _ : state)
         for (int part = 0; part < kBlockLanes / kLanes; ++part) {
-            interpolate_lanes(planes.data(), 3, block, part, true, lanes);
+            interpolate_lanes(planes.data(), 3, groups + part, true, lanes);
             benchmark::DoNotOptimize(lanes);
         }
     state.SetItemsProcessed(int64_t(state.iterations()) * kBlockLanes);

@@ -9,6 +9,7 @@
 #include "shading/derivatives.h"
 #include "shading/program.h"
 #include "raster/fragment_inputs.h"
+#include "shading/block_layout.h"
 
 namespace st {
 
@@ -52,7 +53,9 @@ BlockInputs interpolate(const Vert v[3], int bx, int by) {
     BlockInputs out;
     for (int part = 0; part < kBlockLanes / kLanes; ++part) {
         FragmentLanes lanes;
-        interpolate_lanes(planes.data(), 1, BlockCoverage{bx, by, 0xffff}, part, true, lanes);
+        LaneGroup groups[kLanes / kGroupLanes];
+        for (int g = 0; g < kLanes / kGroupLanes; ++g) groups[g] = {bx, by, part * (kLanes / kGroupLanes) + g, 0xff};
+        interpolate_lanes(planes.data(), 1, groups, true, lanes);
         for (int lane = 0; lane < kLanes; ++lane) {
             const Vec4& c = lanes.varyings[0];
             const Vec4& f = lanes.frag_coord;
@@ -113,7 +116,9 @@ TEST(Interpolation, QuadDerivatives) {
     std::vector<Plane> planes;
     setup_attribute_planes(sv[0], sv[1], sv[2], 1, planes);
     FragmentLanes lanes;
-    interpolate_lanes(planes.data(), 1, BlockCoverage{8, 20, 0xffff}, 0, true, lanes);
+    LaneGroup groups[kLanes / kGroupLanes];
+    for (int g = 0; g < kLanes / kGroupLanes; ++g) groups[g] = {8, 20, g, 0xff};
+    interpolate_lanes(planes.data(), 1, groups, true, lanes);
     const Float ddx = dFdx(lanes.varyings[0].x), ddy = dFdy(lanes.varyings[0].y);
     for (int lane = 0; lane < kLanes; ++lane) {
         EXPECT_FLOAT_EQ(ddx[lane], 0.25f);

@@ -36,26 +36,36 @@ struct PreparedDraw {
     std::vector<unsigned> clip_masks;     // outcodes of `shaded`
 };
 
-// One part of a block after the fragment stage: what output merging needs.
-struct ShadedPart {
+// One twin call after the fragment stage: what output merging needs.
+struct ShadedCall {
     Vec4 colour;
     Float depth;          // gl_FragCoord.z, clamped
-    unsigned live = 0;    // covered and not discarded, bit i = lane i of the part
-    int x = 0, y = 0;     // the block's lower-left pixel
-    int part = 0;
+    unsigned live = 0;    // covered and not discarded, bit i = lane i
+    uint32_t first = 0;   // its groups: WorkerScratch::groups[first ...]
 };
+
+// A covered group of a block and the triangle (index into the pass's
+// triangles) that covers it.
+struct TileGroup {
+    LaneGroup group;
+    uint32_t triangle = 0;
+};
+
+constexpr int kGroupsPerCall = kLanes / kGroupLanes;
+// Groups rasterized, shaded and merged at a time in one tile: bounds the
+// scratch memory whatever the overdraw.
+constexpr size_t kMaxTileGroups = 4096;
 
 // Per-worker scratch, so the tile phase allocates nothing once warm.
 struct WorkerScratch {
     std::vector<BlockCoverage> blocks;
+    std::vector<TileGroup> groups;
     FragmentLanes inputs;
     FragmentResult result;
-    std::vector<ShadedPart> shaded;
+    std::vector<ShadedCall> shaded;
+    float spare_colour[4 * kGroupLanes] = {}, spare_depth[kGroupLanes] = {};
     StageTimes times;
 };
-
-constexpr int kParts = kBlockLanes / kLanes;  // twin calls per block
-constexpr unsigned kPartBits = (1u << kLanes) - 1;
 
 }  // namespace
 
@@ -191,6 +201,11 @@ void CpuRenderer::Impl::setup_and_bin(std::vector<PreparedDraw>& draws, const Pa
     }
 }
 
+// A tile in three phases, so that each is timed once per batch rather than
+// once per triangle: rasterize a batch of triangles into 8-lane groups,
+// shade the groups (kGroupsPerCall of the same triangle per twin call),
+// then depth-test and blend them in triangle order. Twins never read the
+// framebuffer, so shading ahead of merging changes nothing.
 void CpuRenderer::Impl::shade_tile(int tile, int worker, std::vector<PreparedDraw>& draws,
                                    const Pass& pass, Framebuffer& fb) {
     WorkerScratch& s = scratch[size_t(worker)];
@@ -198,35 +213,62 @@ void CpuRenderer::Impl::shade_tile(int tile, int worker, std::vector<PreparedDra
     const TileRect rect{(tile % tiles_x) * kTileSize, (tile / tiles_x) * kTileSize,
                         std::min(pass.width, (tile % tiles_x + 1) * kTileSize),
                         std::min(pass.height, (tile / tiles_x + 1) * kTileSize)};
-    for (uint32_t index : bins[size_t(tile)]) {
-        const SetupTriangle& tri = triangles[index];
-        const PreparedDraw& d = draws[tri.draw];
+    // The clear is part of the frame, as glClear is on the GL side; each
+    // tile clears its own blocks, in parallel and while they are in cache.
+    fb.clear(rect.x0, rect.y0, rect.x1, rect.y1, pass.clear_colour, pass.clear_depth);
+    const std::vector<uint32_t>& bin = bins[size_t(tile)];
+    for (size_t next = 0; next < bin.size();) {
         const auto t0 = Clock::now();
-        s.blocks.clear();
-        rasterize_in_tile(tri, rect, s.blocks);
+        s.groups.clear();
+        for (; next < bin.size() && s.groups.size() < kMaxTileGroups; ++next) {
+            s.blocks.clear();
+            rasterize_in_tile(triangles[bin[next]], rect, s.blocks);
+            for (const BlockCoverage& block : s.blocks)
+                for (int half = 0; half < 2; ++half)
+                    if (const unsigned mask = block.mask >> (half * kGroupLanes) & 0xff)
+                        s.groups.push_back({LaneGroup{block.x, block.y, half, mask}, bin[next]});
+        }
         const auto t1 = Clock::now();
 
-        // Fragment stage: every part of a block that has a covered lane.
-        // Parts without one are skipped (llvmpipe skips them too); nothing
-        // crosses parts, so skipping changes no value.
-        const Plane* tri_planes = &planes[tri.first_plane];
+        // Fragment stage. Groups without a covered lane never got here
+        // (llvmpipe skips such vectors too); a call short of groups fills up
+        // with an uncovered copy of its last one, whose results are dropped.
         s.shaded.clear();
-        for (const BlockCoverage& block : s.blocks)
-            for (int part = 0; part < kParts; ++part) {
-                const unsigned covered = block.mask >> (part * kLanes) & kPartBits;
-                if (!covered) continue;
-                interpolate_lanes(tri_planes, d.varying_count, block, part, tri.front_facing, s.inputs);
-                d.fragment->shade(s.inputs, s.result);
-                const unsigned live = covered & ~simd::bits(s.result.discarded);
-                if (live) s.shaded.push_back({s.result.colour, s.inputs.frag_coord.z, live, block.x, block.y, part});
-            }
+        for (size_t i = 0; i < s.groups.size();) {
+            const uint32_t tri_index = s.groups[i].triangle;
+            const SetupTriangle& tri = triangles[tri_index];
+            const PreparedDraw& d = draws[tri.draw];
+            LaneGroup call[kGroupsPerCall];
+            const auto first = uint32_t(i);
+            int n = 0;
+            for (; n < kGroupsPerCall && i < s.groups.size() && s.groups[i].triangle == tri_index; ++n, ++i)
+                call[n] = s.groups[i].group;
+            for (int g = n; g < kGroupsPerCall; ++g) call[g] = LaneGroup{call[n - 1].x, call[n - 1].y, call[n - 1].half, 0};
+            interpolate_lanes(&planes[tri.first_plane], d.varying_count, call, tri.front_facing, s.inputs);
+            d.fragment->shade(s.inputs, s.result);
+            const unsigned live = simd::bits(and_not(s.inputs.covered, s.result.discarded));
+            if (live) s.shaded.push_back({s.result.colour, s.inputs.frag_coord.z, live, first});
+        }
         const auto t2 = Clock::now();
 
-        const DrawState& state = d.call->state;
-        for (const ShadedPart& sp : s.shaded) {
-            const size_t b = fb.block(sp.x, sp.y);
-            merge_lanes(state, sp.colour, sp.depth, Mask::from_bits(sp.live), fb.block_colour(b) + sp.part * kLanes,
-                        kBlockLanes, fb.block_depth(b) + sp.part * kLanes);
+        for (const ShadedCall& call : s.shaded) {
+            const DrawState& state = draws[triangles[s.groups[call.first].triangle].draw].call->state;
+            float* colour[kGroupsPerCall];
+            float* depth[kGroupsPerCall];
+            for (int g = 0; g < kGroupsPerCall; ++g) {
+                // A group without a live lane (padding, or all discarded)
+                // loads and stores a scratch copy, never the framebuffer.
+                if (!(call.live >> (g * kGroupLanes) & 0xff)) {
+                    colour[g] = s.spare_colour;
+                    depth[g] = s.spare_depth;
+                    continue;
+                }
+                const TileGroup& tg = s.groups[call.first + uint32_t(g)];
+                const size_t b = fb.block(tg.group.x, tg.group.y);
+                colour[g] = fb.group_colour(b, tg.group.half);
+                depth[g] = fb.group_depth(b, tg.group.half);
+            }
+            merge_lanes(state, call.colour, call.depth, Mask::from_bits(call.live), colour, depth);
         }
         const auto t3 = Clock::now();
         s.times.raster_ms += ms_between(t0, t1);
@@ -244,12 +286,9 @@ void CpuRenderer::execute() {
         auto& draws = m.passes[pi];
         const Viewport viewport{0, 0, float(pass.width), float(pass.height), 0, 1};
         const auto t0 = Clock::now();
-        // The clear is part of the frame, as glClear is on the GL side; the
-        // allocation is reused from frame to frame.
-        if (m.result && m.result->width == pass.width && m.result->height == pass.height)
-            m.result->clear(pass.clear_colour, pass.clear_depth);
-        else
-            m.result = std::make_unique<Framebuffer>(pass.width, pass.height, pass.clear_colour, pass.clear_depth);
+        // The allocation is reused from frame to frame; tiles clear it.
+        if (!m.result || m.result->width != pass.width || m.result->height != pass.height)
+            m.result = std::make_unique<Framebuffer>(pass.width, pass.height);
         for (PreparedDraw& d : draws) m.run_vertex_stage(d, viewport);
         const auto t1 = Clock::now();
         m.setup_and_bin(draws, pass, viewport);

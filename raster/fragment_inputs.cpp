@@ -1,6 +1,10 @@
 // fragment_inputs.cpp: see fragment_inputs.h.
 #include "raster/fragment_inputs.h"
 
+#include <algorithm>
+
+#include "shading/block_layout.h"
+
 namespace st {
 
 namespace {
@@ -8,8 +12,6 @@ namespace {
 ST_INLINE Float at(const Plane& p, Float px, Float py) {
     return simd::fma(Float(p.dady), py, simd::fma(Float(p.dadx), px, Float(p.a0)));
 }
-
-}  // namespace
 
 // Each lane's pixel offset inside the block, as floats (exact).
 struct LaneOffsets {
@@ -23,22 +25,31 @@ struct LaneOffsets {
 };
 constexpr LaneOffsets kLaneOffsets;
 
-Float lane_pixel_x(int block_x, int part) {
-    return Float(float(block_x)) + Float::load(kLaneOffsets.x + part * kLanes);
-}
+}  // namespace
 
-Float lane_pixel_y(int block_y, int part) {
-    return Float(float(block_y)) + Float::load(kLaneOffsets.y + part * kLanes);
-}
-
-void interpolate_lanes(const Plane* planes, int varying_count, const BlockCoverage& block, int part,
-                       bool front_facing, FragmentLanes& out) {
+void interpolate_lanes(const Plane* planes, int varying_count, const LaneGroup* groups, bool front_facing,
+                       FragmentLanes& out) {
     const Plane& z_plane = planes[0];
     const Plane& inv_w_plane = planes[1];
     const Plane* varying_planes = planes + 2;
+    constexpr int kGroups = kLanes / kGroupLanes;
+    // Pixel indices of every lane: the group's block corner plus the lane's
+    // offset in the block (small integers, exact in float).
+    float corner_x[kLanes], corner_y[kLanes];
+    const float* offset_x[kGroups];
+    const float* offset_y[kGroups];
+    unsigned covered = 0;
+    for (int g = 0; g < kGroups; ++g) {
+        std::fill_n(corner_x + g * kGroupLanes, kGroupLanes, float(groups[g].x));
+        std::fill_n(corner_y + g * kGroupLanes, kGroupLanes, float(groups[g].y));
+        offset_x[g] = kLaneOffsets.x + groups[g].half * kGroupLanes;
+        offset_y[g] = kLaneOffsets.y + groups[g].half * kGroupLanes;
+        covered |= groups[g].mask << (g * kGroupLanes);
+    }
+    const Float px = Float::load(corner_x) + Float::load_groups(offset_x);
+    const Float py = Float::load(corner_y) + Float::load_groups(offset_y);
     out.front_facing = front_facing;
-    out.covered = Mask::from_bits(block.mask >> (part * kLanes));
-    const Float px = lane_pixel_x(block.x, part), py = lane_pixel_y(block.y, part);
+    out.covered = Mask::from_bits(covered);
     // Depth is clamped to the depth range [0, 1] before the test (a NaN
     // stays NaN, as std::clamp leaves it).
     const Float z_raw = at(z_plane, px, py);

@@ -1,23 +1,29 @@
-// fragment_inputs.h: fills the FragmentLanes of one part of a 4x4 block
-// from a triangle's plane equations (perspective-correct varyings,
-// gl_FragCoord), as llvmpipe's interpolation does it (lp_bld_interp.c):
-// numerators and 1/w interpolated linearly on the screen, w = 1 / (1/w) per
-// pixel, varying = numerator * w. Every lane is evaluated exactly as the
-// scalar Plane::at would, so the result does not depend on kLanes.
+// fragment_inputs.h: fills the FragmentLanes of one twin call from a
+// triangle's plane equations (perspective-correct varyings, gl_FragCoord),
+// as llvmpipe's interpolation does it (lp_bld_interp.c): numerators and 1/w
+// interpolated linearly on the screen, w = 1 / (1/w) per pixel, varying =
+// numerator * w. Every lane is evaluated exactly as the scalar Plane::at
+// would, so the result depends neither on kLanes nor on which groups share
+// a call.
 #pragma once
 
+#include <cstdint>
+
 #include "raster/plane.h"
-#include "raster/tile_raster.h"
 #include "shading/program.h"
 
 namespace st {
 
-// `part` selects lanes [part * kLanes, (part + 1) * kLanes) of the block.
-void interpolate_lanes(const Plane* planes, int varying_count, const BlockCoverage& block, int part,
-                       bool front_facing, FragmentLanes& out);
+// One 8-lane group of a 4x4 block (its lower or upper 4x2 half) that a
+// triangle covers at least partly.
+struct LaneGroup {
+    int x = 0, y = 0;     // the block's lower-left pixel
+    int half = 0;         // 0: lanes 0-7 of the block, 1: lanes 8-15
+    unsigned mask = 0;    // bit i = lane i of the group covered
+};
 
-// Pixel index of each lane of a part of the block at (x, y).
-Float lane_pixel_x(int block_x, int part);
-Float lane_pixel_y(int block_y, int part);
+// groups[0 .. kLanes / 8) fill lanes [8g, 8g + 8).
+void interpolate_lanes(const Plane* planes, int varying_count, const LaneGroup* groups, bool front_facing,
+                       FragmentLanes& out);
 
 }  // namespace st

@@ -1,11 +1,11 @@
 // framebuffer.h: an RGBA32F colour target with a 32-bit float depth buffer,
 // stored the way the fragment stage writes it: in 4x4 blocks (row-major
-// over blocks, GL window order, row 0 at the bottom), and inside a block
-// channel by channel, each channel's 16 values in block lane order
-// (shading/block_layout.h). A part of a block that a twin shaded is then
-// kLanes consecutive floats per channel, so depth test and blending load and
-// store whole vectors. to_image() converts to the top-to-bottom RGBA rows
-// of st::Image.
+// over blocks, GL window order, row 0 at the bottom), each block as its two
+// 8-lane groups (shading/block_layout.h), and each group channel by
+// channel, 8 values in lane order. The lanes of one group are then 8
+// consecutive floats per channel, so depth test and blending load and store
+// whole vectors. to_image() converts to the top-to-bottom RGBA rows of
+// st::Image.
 #pragma once
 
 #include <algorithm>
@@ -19,34 +19,42 @@
 namespace st {
 
 struct Framebuffer {
+    static constexpr int kGroupFloats = 4 * kGroupLanes;  // one group's colour
+
     int width = 0, height = 0;
     int blocks_x = 0, blocks_y = 0;
-    std::vector<float> colour;  // [block][channel][lane]
-    std::vector<float> depth;   // [block][lane]
+    std::vector<float> colour;  // [block][group][channel][lane]
+    std::vector<float> depth;   // [block][group][lane]
 
-    Framebuffer(int w, int h, glm::vec4 clear_colour, float clear_depth)
+    Framebuffer(int w, int h)
         : width(w), height(h), blocks_x((w + kBlockSize - 1) / kBlockSize), blocks_y((h + kBlockSize - 1) / kBlockSize),
-          colour(size_t(blocks_x) * blocks_y * 4 * kBlockLanes), depth(size_t(blocks_x) * blocks_y * kBlockLanes) {
-        clear(clear_colour, clear_depth);
-    }
+          colour(size_t(blocks_x) * blocks_y * 4 * kBlockLanes), depth(size_t(blocks_x) * blocks_y * kBlockLanes) {}
 
-    void clear(glm::vec4 clear_colour, float clear_depth) {
-        for (size_t b = 0; b < colour.size(); b += 4 * kBlockLanes)
-            for (int c = 0; c < 4; ++c)
-                std::fill_n(colour.begin() + ptrdiff_t(b) + c * kBlockLanes, kBlockLanes, clear_colour[c]);
-        std::fill(depth.begin(), depth.end(), clear_depth);
+    // Clears the blocks of the pixel rectangle [x0, x1) x [y0, y1), whose
+    // corners are multiples of 4 or the target's edge.
+    void clear(int x0, int y0, int x1, int y1, glm::vec4 clear_colour, float clear_depth) {
+        for (int y = y0; y < y1; y += kBlockSize)
+            for (int x = x0; x < x1; x += kBlockSize) {
+                const size_t b = block(x, y);
+                for (int g = 0; g < 2; ++g) {
+                    float* c = group_colour(b, g);
+                    for (int ch = 0; ch < 4; ++ch) std::fill_n(c + ch * kGroupLanes, kGroupLanes, clear_colour[ch]);
+                    std::fill_n(group_depth(b, g), kGroupLanes, clear_depth);
+                }
+            }
     }
 
     // The block whose lower-left pixel is (x, y), both multiples of 4.
     size_t block(int x, int y) const { return size_t(y / kBlockSize) * blocks_x + size_t(x / kBlockSize); }
-    float* block_colour(size_t b) { return &colour[b * 4 * kBlockLanes]; }  // + channel * kBlockLanes + lane
-    float* block_depth(size_t b) { return &depth[b * kBlockLanes]; }
+    // Channel ch of lane i of group g is group_colour(b, g)[ch * 8 + i].
+    float* group_colour(size_t b, int g) { return &colour[(b * 2 + size_t(g)) * kGroupFloats]; }
+    float* group_depth(size_t b, int g) { return &depth[(b * 2 + size_t(g)) * kGroupLanes]; }
 
     glm::vec4 pixel(int x, int y) const {
         const size_t b = block(x & ~(kBlockSize - 1), y & ~(kBlockSize - 1));
         const int lane = block_lane(x & (kBlockSize - 1), y & (kBlockSize - 1));
-        const float* c = &colour[b * 4 * kBlockLanes + size_t(lane)];
-        return glm::vec4(c[0], c[kBlockLanes], c[2 * kBlockLanes], c[3 * kBlockLanes]);
+        const float* c = &colour[(b * 2 + size_t(lane / kGroupLanes)) * kGroupFloats + size_t(lane % kGroupLanes)];
+        return glm::vec4(c[0], c[kGroupLanes], c[2 * kGroupLanes], c[3 * kGroupLanes]);
     }
 
     Image to_image() const {

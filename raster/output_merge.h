@@ -36,24 +36,27 @@ inline V blend(BlendMode mode, const V& src, const V& dst) {
 }
 
 // Depth test (GL_LESS against the float depth buffer, written when
-// depth_write) and blending of the lanes in `live`. `colour` points at the
-// part's first lane of channel 0 in a framebuffer block, channels
-// `channel_stride` floats apart; `depth` at the part's first depth value.
-inline void merge_lanes(const DrawState& state, const Vec4& src, Float z, Mask live, float* colour,
-                        int channel_stride, float* depth) {
+// depth_write) and blending of the lanes in `live`. colour[g] points at the
+// framebuffer colour of the pixels of lanes [8g, 8g + 8), channel by
+// channel 8 floats apart; depth[g] at their depth values.
+inline void merge_lanes(const DrawState& state, const Vec4& src, Float z, Mask live, float* const* colour,
+                        float* const* depth) {
     Mask pass = live;
     if (state.depth_test) {
-        const Float stored = Float::load(depth);
+        const Float stored = Float::load_groups(depth);
         pass = pass && z < stored;
-        if (state.depth_write) select(pass, z, stored).store(depth);
+        if (state.depth_write) select(pass, z, stored).store_groups(depth);
     }
-    const Vec4 dst(Float::load(colour), Float::load(colour + channel_stride), Float::load(colour + 2 * channel_stride),
-                   Float::load(colour + 3 * channel_stride));
+    float* channel[4][kLanes / 8];
+    for (int c = 0; c < 4; ++c)
+        for (int g = 0; g < kLanes / 8; ++g) channel[c][g] = colour[g] + c * 8;
+    const Vec4 dst(Float::load_groups(channel[0]), Float::load_groups(channel[1]), Float::load_groups(channel[2]),
+                   Float::load_groups(channel[3]));
     const Vec4 out = select(pass, blend(state.blend, src, dst), dst);
-    out.x.store(colour);
-    out.y.store(colour + channel_stride);
-    out.z.store(colour + 2 * channel_stride);
-    out.w.store(colour + 3 * channel_stride);
+    out.x.store_groups(channel[0]);
+    out.y.store_groups(channel[1]);
+    out.z.store_groups(channel[2]);
+    out.w.store_groups(channel[3]);
 }
 
 }  // namespace st

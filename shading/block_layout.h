@@ -11,6 +11,12 @@ namespace st {
 
 inline constexpr int kBlockSize = 4;    // pixels on a side
 inline constexpr int kBlockLanes = 16;  // lanes of a whole block
+// llvmpipe shades a block as two 8-lane vectors, its lower and its upper
+// 4x2 half (lanes 0-7, 8-15). Some of its results depend on the whole
+// vector (when a loop ends, which filter a mixed min/mag sampler uses:
+// docs/llvmpipe/), so a twin always sees such groups whole: kLanes is 8 or
+// 16, one group or two (of any blocks of the same triangle).
+inline constexpr int kGroupLanes = 8;
 
 constexpr int block_lane_x(int lane) { return ((lane >> 2) & 1) * 2 + (lane & 1); }
 constexpr int block_lane_y(int lane) { return (lane >> 3) * 2 + ((lane >> 1) & 1); }

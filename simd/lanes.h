@@ -69,6 +69,15 @@ struct Float {
         return r;
     }
     void store(float* p) const { std::memcpy(p, &v, sizeof v); }
+    // Lanes [8g, 8g + 8) from or to p[g]: each 8-lane group in its own place.
+    static Float load_groups(const float* const* p) {
+        Float r;
+        for (int g = 0; g < kLanes / 8; ++g) std::memcpy(reinterpret_cast<float*>(&r.v) + 8 * g, p[g], 32);
+        return r;
+    }
+    void store_groups(float* const* p) const {
+        for (int g = 0; g < kLanes / 8; ++g) std::memcpy(p[g], reinterpret_cast<const float*>(&v) + 8 * g, 32);
+    }
     float operator[](int lane) const { return v[lane]; }
     void set(int lane, float x) { v[lane] = x; }
 };
@@ -252,6 +261,26 @@ ST_INLINE Int min(Int a, Int b) { return select(a < b, a, b); }
 ST_INLINE Int max(Int a, Int b) { return select(a < b, b, a); }
 ST_INLINE Int clamp(Int x, Int lo, Int hi) { return min(max(x, lo), hi); }
 
+// Each 32-bit lane as two int16 halves (the packed 8-bit texel arithmetic of
+// llvmpipe's AoS sampler): half-wise add, subtract and shift wrap modulo
+// 2^16; mulhrs16 is pmulhrsw, (a * b + 0x4000) >> 15 per half.
+using U16V = uint16_t __attribute__((vector_size(kLanes * 4)));
+using I16V = int16_t __attribute__((vector_size(kLanes * 4)));
+ST_INLINE Int sub16(Int a, Int b) { return Int(IntV(U16V(a.v) - U16V(b.v))); }
+ST_INLINE Int shl16(Int a, int n) { return Int(IntV(U16V(a.v) << n)); }
+ST_INLINE Int mulhrs16(Int a, Int b) {
+#if defined(ST_SIMD_AVX512) && defined(__AVX512BW__)
+    return Int(IntV(_mm512_mulhrs_epi16(__m512i(a.v), __m512i(b.v))));
+#elif defined(ST_SIMD_AVX2)
+    return Int(IntV(_mm256_mulhrs_epi16(__m256i(a.v), __m256i(b.v))));
+#else
+    const I16V x = I16V(a.v), y = I16V(b.v);
+    I16V r;
+    for (int i = 0; i < 2 * kLanes; ++i) r[i] = int16_t((int32_t(x[i]) * int32_t(y[i]) + 0x4000) >> 15);
+    return Int(IntV(r));
+#endif
+}
+
 // base[index] per active lane, 0 on the others; inactive lanes read nothing.
 ST_INLINE Int gather(const int32_t* base, Int index, Mask active) {
 #if defined(ST_SIMD_AVX512)
@@ -266,6 +295,28 @@ ST_INLINE Int gather(const int32_t* base, Int index, Mask active) {
     return r;
 #endif
 }
+// base[index] and base[index + 1] for every lane, as one 8-byte load per
+// lane (two neighbouring texels); the caller guarantees both are in bounds.
+ST_INLINE void gather_pairs(const int32_t* base, Int index, Int& first, Int& second) {
+#if defined(ST_SIMD_AVX512)
+    const __m512i idx = __m512i(index.v);
+    const auto* b = reinterpret_cast<const long long*>(base);
+    const __m512i lo = _mm512_i32gather_epi64(_mm512_castsi512_si256(idx), b, 4);
+    const __m512i hi = _mm512_i32gather_epi64(_mm512_extracti64x4_epi64(idx, 1), b, 4);
+    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+    const __m512i odd = _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
+    first = Int(IntV(_mm512_permutex2var_epi32(lo, even, hi)));
+    second = Int(IntV(_mm512_permutex2var_epi32(lo, odd, hi)));
+#else
+    for (int i = 0; i < kLanes; ++i) {
+        int32_t pair[2];
+        std::memcpy(pair, base + index.v[i], sizeof pair);
+        first.v[i] = pair[0];
+        second.v[i] = pair[1];
+    }
+#endif
+}
+
 ST_INLINE Float gather(const float* base, Int index, Mask active) {
 #if defined(ST_SIMD_AVX512)
     const __mmask16 k = _mm512_movepi32_mask(__m512i(active.v));

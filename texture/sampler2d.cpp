@@ -12,6 +12,8 @@
 // in range by construction.
 #include "texture/sampler2d.h"
 
+#include <cstring>
+
 namespace st {
 
 namespace {
@@ -106,6 +108,13 @@ ST_INLINE Int lerp8(Int w, Int v0, Int v1) {
     return (v0 + (rounded & Int(0xff))) & Int(0xff);
 }
 
+// lerp8 on two channels at once, one per 16-bit half of each lane, with
+// the weight in both halves: pmulhrsw itself where the build has it.
+ST_INLINE Int lerp8_pairs(Int w, Int v0, Int v1) {
+    const Int rounded = simd::mulhrs16(w, simd::shl16(simd::sub16(v1, v0), 7));
+    return (v0 + (rounded & Int(0x00ff00ff))) & Int(0x00ff00ff);
+}
+
 // Float lerp: fma(t, v1 - v0, v0), as lp_build_mad fuses it.
 ST_INLINE Float lerp_float(Float t, Float v0, Float v1) { return fma(t, v1 - v0, v0); }
 
@@ -131,11 +140,18 @@ glm::vec4 lane0(const Vec4& v) { return glm::vec4(v.x[0], v.y[0], v.z[0], v.w[0]
 
 }  // namespace
 
+Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
+    if (texture.format == TextureFormat::RGBA8) {
+        rgba8_.assign(texture.texels8.size() / 4 + 1, 0);
+        std::memcpy(rgba8_.data(), texture.texels8.data(), texture.texels8.size());
+    }
+}
+
 Vec4 Sampler2D::fetch(Int x, Int y) const {
     const Mask inside = !(x < Int(0)) && !(y < Int(0)) && x < Int(tex_->width) && y < Int(tex_->height);
     const Int texel = y * Int(tex_->width) + x;
     if (tex_->format == TextureFormat::RGBA8) {
-        const Int rgba = simd::gather(reinterpret_cast<const int32_t*>(tex_->texels8.data()), texel, inside);
+        const Int rgba = simd::gather(rgba8_.data(), texel, inside);
         return Vec4(unorm8_to_float(rgba & Int(0xff)), unorm8_to_float((rgba >> 8) & Int(0xff)),
                     unorm8_to_float((rgba >> 16) & Int(0xff)), unorm8_to_float((rgba >> 24) & Int(0xff)));
     }
@@ -174,17 +190,31 @@ Vec4 Sampler2D::sample_linear_unorm8(const Vec2& st) const {
     const LinearTaps8 u = linear_taps_fixed(st.x, tex_->width, tex_->wrap);
     const LinearTaps8 v = linear_taps_fixed(st.y, tex_->height, tex_->wrap);
     // Every tap is inside the texture by construction (wrapped or clamped).
-    const auto* texels = reinterpret_cast<const int32_t*>(tex_->texels8.data());
+    // Each row's two taps are neighbours but where the wrap or the clamp
+    // joins them otherwise; those lanes are fetched again.
+    const int32_t* texels = rgba8_.data();
     const Int w(tex_->width);
-    const Mask all(true);
-    const Int t00 = simd::gather(texels, v.i0 * w + u.i0, all), t10 = simd::gather(texels, v.i0 * w + u.i1, all);
-    const Int t01 = simd::gather(texels, v.i1 * w + u.i0, all), t11 = simd::gather(texels, v.i1 * w + u.i1, all);
-    auto channel = [&](int shift) {
-        auto byte = [&](Int t) { return (t >> shift) & Int(0xff); };
-        const Int bottom = lerp8(u.weight, byte(t00), byte(t10)), top = lerp8(u.weight, byte(t01), byte(t11));
-        return unorm8_to_float(lerp8(v.weight, bottom, top));
+    const Int row0 = v.i0 * w, row1 = v.i1 * w;
+    Int t00, t10, t01, t11;
+    simd::gather_pairs(texels, row0 + u.i0, t00, t10);
+    simd::gather_pairs(texels, row1 + u.i0, t01, t11);
+    const Mask apart = u.i1 != u.i0 + Int(1);
+    if (simd::any(apart)) {
+        t10 = select(apart, simd::gather(texels, row0 + u.i1, apart), t10);
+        t11 = select(apart, simd::gather(texels, row1 + u.i1, apart), t11);
+    }
+    // Two channels per lane, one in each 16-bit half (R and B, then G and
+    // A), lerped at once.
+    const Int wu = u.weight | (u.weight << 16), wv = v.weight | (v.weight << 16);
+    auto pairs = [&](int shift) {
+        auto half_bytes = [&](Int t) { return (t >> shift) & Int(0x00ff00ff); };
+        const Int bottom = lerp8_pairs(wu, half_bytes(t00), half_bytes(t10));
+        const Int top = lerp8_pairs(wu, half_bytes(t01), half_bytes(t11));
+        return lerp8_pairs(wv, bottom, top);
     };
-    return Vec4(channel(0), channel(8), channel(16), channel(24));
+    const Int rb = pairs(0), ga = pairs(8);
+    return Vec4(unorm8_to_float(rb & Int(0xff)), unorm8_to_float(ga & Int(0xff)), unorm8_to_float(rb >> 16),
+                unorm8_to_float(ga >> 16));
 }
 
 }  // namespace st

@@ -2,6 +2,9 @@
 // llvmpipe filters it (see sampler2d.cpp for the arithmetic of each path).
 #pragma once
 
+#include <cstdint>
+#include <vector>
+
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
@@ -12,7 +15,7 @@ namespace st {
 
 class Sampler2D {
 public:
-    explicit Sampler2D(const Texture& texture) : tex_(&texture) {}
+    explicit Sampler2D(const Texture& texture);
 
     // GLSL texture(sampler2D, vec2) without mipmaps.
     glm::vec4 sample(const glm::vec2& st) const;
@@ -33,6 +36,10 @@ private:
     Vec4 sample_linear_unorm8(const Vec2& st) const;
 
     const Texture* tex_;
+    // RGBA8 texels as one int32 each (little-endian: R in the low byte), and
+    // one more, so that a texel and its right neighbour are always one
+    // 8-byte load.
+    std::vector<int32_t> rgba8_;
 };
 
 }  // namespace st
