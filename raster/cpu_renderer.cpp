@@ -38,7 +38,7 @@ struct PreparedDraw {
 
 // One twin call after the fragment stage: what output merging needs.
 struct ShadedCall {
-    Vec4 colour;
+    FragmentResult result;
     Float depth;          // gl_FragCoord.z, clamped
     unsigned live = 0;    // covered and not discarded, bit i = lane i
     uint32_t first = 0;   // its groups: WorkerScratch::groups[first ...]
@@ -61,7 +61,6 @@ struct WorkerScratch {
     std::vector<BlockCoverage> blocks;
     std::vector<TileGroup> groups;
     FragmentLanes inputs;
-    FragmentResult result;
     std::vector<ShadedCall> shaded;
     float spare_colour[4 * kGroupLanes] = {}, spare_depth[kGroupLanes] = {};
     StageTimes times;
@@ -245,9 +244,12 @@ void CpuRenderer::Impl::shade_tile(int tile, int worker, std::vector<PreparedDra
                 call[n] = s.groups[i].group;
             for (int g = n; g < kGroupsPerCall; ++g) call[g] = LaneGroup{call[n - 1].x, call[n - 1].y, call[n - 1].half, 0};
             interpolate_lanes(&planes[tri.first_plane], d.varying_count, call, tri.front_facing, s.inputs);
-            d.fragment->shade(s.inputs, s.result);
-            const unsigned live = simd::bits(and_not(s.inputs.covered, s.result.discarded));
-            if (live) s.shaded.push_back({s.result.colour, s.inputs.frag_coord.z, live, first});
+            ShadedCall& out = s.shaded.emplace_back();
+            d.fragment->shade(s.inputs, out.result);
+            out.live = simd::bits(and_not(s.inputs.covered, out.result.discarded));
+            out.depth = s.inputs.frag_coord.z;
+            out.first = first;
+            if (!out.live) s.shaded.pop_back();
         }
         const auto t2 = Clock::now();
 
@@ -268,7 +270,7 @@ void CpuRenderer::Impl::shade_tile(int tile, int worker, std::vector<PreparedDra
                 colour[g] = fb.group_colour(b, tg.group.half);
                 depth[g] = fb.group_depth(b, tg.group.half);
             }
-            merge_lanes(state, call.colour, call.depth, Mask::from_bits(call.live), colour, depth);
+            merge_lanes(state, call.result.colour, call.depth, Mask::from_bits(call.live), colour, depth);
         }
         const auto t3 = Clock::now();
         s.times.raster_ms += ms_between(t0, t1);

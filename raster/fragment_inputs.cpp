@@ -13,17 +13,32 @@ ST_INLINE Float at(const Plane& p, Float px, Float py) {
     return simd::fma(Float(p.dady), py, simd::fma(Float(p.dadx), px, Float(p.a0)));
 }
 
-// Each lane's pixel offset inside the block, as floats (exact).
+// Each lane's pixel offset inside its block, as floats (exact), for every
+// choice of halves of the call's groups: one aligned load per call.
+constexpr int kGroups = kLanes / kGroupLanes;
 struct LaneOffsets {
-    float x[kBlockLanes], y[kBlockLanes];
+    alignas(64) float x[1 << kGroups][kLanes];
+    alignas(64) float y[1 << kGroups][kLanes];
     constexpr LaneOffsets() : x(), y() {
-        for (int lane = 0; lane < kBlockLanes; ++lane) {
-            x[lane] = float(block_lane_x(lane));
-            y[lane] = float(block_lane_y(lane));
-        }
+        for (int halves = 0; halves < (1 << kGroups); ++halves)
+            for (int lane = 0; lane < kLanes; ++lane) {
+                const int half = halves >> (lane / kGroupLanes) & 1;
+                x[halves][lane] = float(block_lane_x(half * kGroupLanes + lane % kGroupLanes));
+                y[halves][lane] = float(block_lane_y(half * kGroupLanes + lane % kGroupLanes));
+            }
     }
 };
 constexpr LaneOffsets kLaneOffsets;
+
+// A per-group value in each group's lanes.
+ST_INLINE Float per_group(const LaneGroup* groups, int LaneGroup::*field) {
+    Float r(float(groups[0].*field));
+    for (int g = 1; g < kGroups; ++g) {
+        const Mask upper = Mask::from_bits(~0u << (g * kGroupLanes));
+        r = select(upper, Float(float(groups[g].*field)), r);
+    }
+    return r;
+}
 
 }  // namespace
 
@@ -32,22 +47,16 @@ void interpolate_lanes(const Plane* planes, int varying_count, const LaneGroup* 
     const Plane& z_plane = planes[0];
     const Plane& inv_w_plane = planes[1];
     const Plane* varying_planes = planes + 2;
-    constexpr int kGroups = kLanes / kGroupLanes;
     // Pixel indices of every lane: the group's block corner plus the lane's
     // offset in the block (small integers, exact in float).
-    float corner_x[kLanes], corner_y[kLanes];
-    const float* offset_x[kGroups];
-    const float* offset_y[kGroups];
+    int halves = 0;
     unsigned covered = 0;
     for (int g = 0; g < kGroups; ++g) {
-        std::fill_n(corner_x + g * kGroupLanes, kGroupLanes, float(groups[g].x));
-        std::fill_n(corner_y + g * kGroupLanes, kGroupLanes, float(groups[g].y));
-        offset_x[g] = kLaneOffsets.x + groups[g].half * kGroupLanes;
-        offset_y[g] = kLaneOffsets.y + groups[g].half * kGroupLanes;
+        halves |= groups[g].half << g;
         covered |= groups[g].mask << (g * kGroupLanes);
     }
-    const Float px = Float::load(corner_x) + Float::load_groups(offset_x);
-    const Float py = Float::load(corner_y) + Float::load_groups(offset_y);
+    const Float px = per_group(groups, &LaneGroup::x) + Float::load(kLaneOffsets.x[halves]);
+    const Float py = per_group(groups, &LaneGroup::y) + Float::load(kLaneOffsets.y[halves]);
     out.front_facing = front_facing;
     out.covered = Mask::from_bits(covered);
     // Depth is clamped to the depth range [0, 1] before the test (a NaN

@@ -70,14 +70,8 @@ struct Float {
     }
     void store(float* p) const { std::memcpy(p, &v, sizeof v); }
     // Lanes [8g, 8g + 8) from or to p[g]: each 8-lane group in its own place.
-    static Float load_groups(const float* const* p) {
-        Float r;
-        for (int g = 0; g < kLanes / 8; ++g) std::memcpy(reinterpret_cast<float*>(&r.v) + 8 * g, p[g], 32);
-        return r;
-    }
-    void store_groups(float* const* p) const {
-        for (int g = 0; g < kLanes / 8; ++g) std::memcpy(p[g], reinterpret_cast<const float*>(&v) + 8 * g, 32);
-    }
+    static Float load_groups(const float* const* p);
+    void store_groups(float* const* p) const;
     float operator[](int lane) const { return v[lane]; }
     void set(int lane, float x) { v[lane] = x; }
 };
@@ -260,6 +254,26 @@ ST_INLINE Float to_float(Int x) { return Float(__builtin_convertvector(x.v, Floa
 ST_INLINE Int min(Int a, Int b) { return select(a < b, a, b); }
 ST_INLINE Int max(Int a, Int b) { return select(a < b, b, a); }
 ST_INLINE Int clamp(Int x, Int lo, Int hi) { return min(max(x, lo), hi); }
+
+// Two 32-byte halves joined in registers (a 64-byte load of two 32-byte
+// stores would stall store forwarding).
+ST_INLINE Float Float::load_groups(const float* const* p) {
+#if defined(ST_SIMD_AVX512)
+    return Float(FloatV(_mm512_insertf32x8(_mm512_castps256_ps512(_mm256_loadu_ps(p[0])), _mm256_loadu_ps(p[1]), 1)));
+#else
+    Float r;
+    for (int g = 0; g < kLanes / 8; ++g) std::memcpy(reinterpret_cast<float*>(&r.v) + 8 * g, p[g], 32);
+    return r;
+#endif
+}
+ST_INLINE void Float::store_groups(float* const* p) const {
+#if defined(ST_SIMD_AVX512)
+    _mm256_storeu_ps(p[0], _mm512_castps512_ps256(__m512(v)));
+    _mm256_storeu_ps(p[1], _mm512_extractf32x8_ps(__m512(v), 1));
+#else
+    for (int g = 0; g < kLanes / 8; ++g) std::memcpy(p[g], reinterpret_cast<const float*>(&v) + 8 * g, 32);
+#endif
+}
 
 // Each 32-bit lane as two int16 halves (the packed 8-bit texel arithmetic of
 // llvmpipe's AoS sampler): half-wise add, subtract and shift wrap modulo
