@@ -232,7 +232,7 @@ void CpuRenderer::Impl::shade_tile(int tile, int worker, std::vector<PreparedDra
         // Fragment stage. Groups without a covered lane never got here
         // (llvmpipe skips such vectors too); a call short of groups fills up
         // with an uncovered copy of its last one, whose results are dropped.
-        s.shaded.clear();
+        size_t shaded = 0;
         for (size_t i = 0; i < s.groups.size();) {
             const uint32_t tri_index = s.groups[i].triangle;
             const SetupTriangle& tri = triangles[tri_index];
@@ -244,16 +244,20 @@ void CpuRenderer::Impl::shade_tile(int tile, int worker, std::vector<PreparedDra
                 call[n] = s.groups[i].group;
             for (int g = n; g < kGroupsPerCall; ++g) call[g] = LaneGroup{call[n - 1].x, call[n - 1].y, call[n - 1].half, 0};
             interpolate_lanes(&planes[tri.first_plane], d.varying_count, call, tri.front_facing, s.inputs);
-            ShadedCall& out = s.shaded.emplace_back();
+            // Grow only: a new ShadedCall is 400 zeroed bytes, and the twin
+            // writes every field that is read.
+            if (shaded == s.shaded.size()) s.shaded.emplace_back();
+            ShadedCall& out = s.shaded[shaded];
             d.fragment->shade(s.inputs, out.result);
             out.live = simd::bits(and_not(s.inputs.covered, out.result.discarded));
             out.depth = s.inputs.frag_coord.z;
             out.first = first;
-            if (!out.live) s.shaded.pop_back();
+            if (out.live) ++shaded;
         }
         const auto t2 = Clock::now();
 
-        for (const ShadedCall& call : s.shaded) {
+        for (size_t k = 0; k < shaded; ++k) {
+            const ShadedCall& call = s.shaded[k];
             const DrawState& state = draws[triangles[s.groups[call.first].triangle].draw].call->state;
             float* colour[kGroupsPerCall];
             float* depth[kGroupsPerCall];

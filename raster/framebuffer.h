@@ -9,6 +9,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstring>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -33,15 +34,19 @@ struct Framebuffer {
     // Clears the blocks of the pixel rectangle [x0, x1) x [y0, y1), whose
     // corners are multiples of 4 or the target's edge.
     void clear(int x0, int y0, int x1, int y1, glm::vec4 clear_colour, float clear_depth) {
-        for (int y = y0; y < y1; y += kBlockSize)
-            for (int x = x0; x < x1; x += kBlockSize) {
-                const size_t b = block(x, y);
-                for (int g = 0; g < 2; ++g) {
-                    float* c = group_colour(b, g);
-                    for (int ch = 0; ch < 4; ++ch) std::fill_n(c + ch * kGroupLanes, kGroupLanes, clear_colour[ch]);
-                    std::fill_n(group_depth(b, g), kGroupLanes, clear_depth);
-                }
+        // One block's worth of cleared values, copied block by block.
+        float colour_pattern[4 * kBlockLanes], depth_pattern[kBlockLanes];
+        for (int g = 0; g < 2; ++g)
+            for (int ch = 0; ch < 4; ++ch)
+                std::fill_n(colour_pattern + g * kGroupFloats + ch * kGroupLanes, kGroupLanes, clear_colour[ch]);
+        std::fill_n(depth_pattern, kBlockLanes, clear_depth);
+        for (int y = y0; y < y1; y += kBlockSize) {
+            const size_t first = block(x0, y), count = size_t((x1 - x0 + kBlockSize - 1) / kBlockSize);
+            for (size_t b = first; b < first + count; ++b) {
+                std::memcpy(&colour[b * 4 * kBlockLanes], colour_pattern, sizeof colour_pattern);
+                std::memcpy(&depth[b * kBlockLanes], depth_pattern, sizeof depth_pattern);
             }
+        }
     }
 
     // The block whose lower-left pixel is (x, y), both multiples of 4.
