@@ -5,6 +5,21 @@
 
 namespace st {
 
+namespace {
+
+// Sixteen lanes of a block, as plain vector-extension types (these are
+// integers: the lane width of the shading runtime does not matter here).
+using I64Lanes = int64_t __attribute__((vector_size(8 * kBlockLanes)));
+using I32Lanes = int32_t __attribute__((vector_size(4 * kBlockLanes)));
+
+constexpr I32Lanes kLaneX = {0, 1, 0, 1, 2, 3, 2, 3, 0, 1, 0, 1, 2, 3, 2, 3};
+constexpr I32Lanes kLaneY = {0, 0, 1, 1, 0, 0, 1, 1, 2, 2, 3, 3, 2, 2, 3, 3};
+
+static_assert(block_lane_x(5) == 3 && block_lane_y(5) == 0 && block_lane_x(10) == 0 && block_lane_y(10) == 3,
+              "kLaneX/kLaneY follow shading/block_layout.h");
+
+}  // namespace
+
 void rasterize_in_tile(const SetupTriangle& tri, const TileRect& tile, std::vector<BlockCoverage>& out) {
     const int x_lo = std::max(tri.x_min, tile.x0) & ~3, y_lo = std::max(tri.y_min, tile.y0) & ~3;
     const int x_hi = std::min(tri.x_max, tile.x1 - 1), y_hi = std::min(tri.y_max, tile.y1 - 1);
@@ -12,7 +27,7 @@ void rasterize_in_tile(const SetupTriangle& tri, const TileRect& tile, std::vect
     const EdgeFunction* e = tri.edge;
     // Each edge's value at every lane of a block, relative to the block's
     // corner: exact integers, so stepping equals evaluating at() per pixel.
-    int64_t lane_offset[3][kBlockLanes];
+    I64Lanes lane_offset[3];
     for (int i = 0; i < 3; ++i)
         for (int lane = 0; lane < kBlockLanes; ++lane)
             lane_offset[i][lane] = e[i].dcdx * block_lane_x(lane) + e[i].dcdy * block_lane_y(lane);
@@ -36,13 +51,13 @@ void rasterize_in_tile(const SetupTriangle& tri, const TileRect& tile, std::vect
                 out.push_back({x, y, 0xffff});
                 continue;
             }
+            // A partly covered block: all sixteen lanes at once.
+            const I32Lanes px = x + kLaneX, py = y + kLaneY;
+            const I32Lanes in_box = (px >= tri.x_min) & (px <= x_hi) & (py >= tri.y_min) & (py <= y_hi);
+            const I64Lanes in_edges = (row[0] + lane_offset[0] > 0) & (row[1] + lane_offset[1] > 0) &
+                                      (row[2] + lane_offset[2] > 0);
             unsigned mask = 0;
-            for (int lane = 0; lane < kBlockLanes; ++lane) {
-                const int px = x + block_lane_x(lane), py = y + block_lane_y(lane);
-                bool inside = px >= tri.x_min && px <= x_hi && py >= tri.y_min && py <= y_hi;
-                for (int i = 0; i < 3; ++i) inside = inside && row[i] + lane_offset[i][lane] > 0;
-                mask |= unsigned(inside) << lane;
-            }
+            for (int lane = 0; lane < kBlockLanes; ++lane) mask |= unsigned(in_box[lane] & in_edges[lane] & 1) << lane;
             if (mask) out.push_back({x, y, mask});
         }
     }
