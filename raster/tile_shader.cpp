@@ -1,0 +1,117 @@
+// tile_shader.cpp: see tile_shader.h.
+//
+// A tile runs in three phases, so that each is timed once per batch rather
+// than once per triangle: rasterize a batch of triangles into 8-lane groups,
+// shade the groups (kGroupsPerCall of the same triangle per twin call), then
+// depth-test and blend them in triangle order. Twins never read the
+// framebuffer, so shading ahead of merging changes nothing.
+#include "raster/tile_shader.h"
+
+#include <algorithm>
+
+#include "raster/output_merge.h"
+
+namespace st {
+
+namespace {
+
+constexpr int kGroupsPerCall = kLanes / kGroupLanes;
+// Groups rasterized, shaded and merged at a time in one tile: bounds the
+// scratch memory whatever the overdraw.
+constexpr size_t kMaxTileGroups = 4096;
+
+}  // namespace
+
+void TileShader::shade(int tile, const Binner& binner, const std::vector<PreparedDraw>& draws, const Pass& pass,
+                       Framebuffer& fb) {
+    const int tiles_x = binner.tiles_x();
+    const TileRect rect{(tile % tiles_x) * kTileSize, (tile / tiles_x) * kTileSize,
+                        std::min(pass.width, (tile % tiles_x + 1) * kTileSize),
+                        std::min(pass.height, (tile / tiles_x + 1) * kTileSize)};
+    // The clear is part of the frame, as glClear is on the GL side; each
+    // tile clears its own blocks, in parallel and while they are in cache.
+    fb.clear(rect.x0, rect.y0, rect.x1, rect.y1, pass.clear_colour, pass.clear_depth);
+    size_t chunk = 0, next = 0;  // the next triangle: chunk's bin entry `next`
+    while (chunk < binner.chunk_count()) {
+        const auto t0 = Clock::now();
+        groups_.clear();
+        for (; chunk < binner.chunk_count() && groups_.size() < kMaxTileGroups; ++chunk, next = 0) {
+            const SetupChunk& c = binner.chunk(chunk);
+            const std::vector<uint32_t>& bin = c.bins[size_t(tile)];
+            for (; next < bin.size() && groups_.size() < kMaxTileGroups; ++next)
+                rasterize(c.triangles[bin[next]], &c.planes[c.triangles[bin[next]].first_plane], rect);
+            if (next < bin.size()) break;  // the batch is full: go on from here
+        }
+        const auto t1 = Clock::now();
+        const size_t calls = shade_groups(draws);
+        const auto t2 = Clock::now();
+        merge(calls, draws, fb);
+        const auto t3 = Clock::now();
+        times.raster_ms += ms_between(t0, t1);
+        times.fragment_ms += ms_between(t1, t2);
+        times.output_ms += ms_between(t2, t3);
+    }
+}
+
+void TileShader::rasterize(const SetupTriangle& tri, const Plane* planes, const TileRect& rect) {
+    blocks_.clear();
+    rasterize_in_tile(tri, rect, blocks_);
+    for (const BlockCoverage& block : blocks_)
+        for (int half = 0; half < 2; ++half)
+            if (const unsigned mask = block.mask >> (half * kGroupLanes) & 0xff)
+                groups_.push_back({LaneGroup{block.x, block.y, half, mask}, &tri, planes});
+}
+
+// Groups without a covered lane never get here (llvmpipe skips such vectors
+// too); a call short of groups fills up with an uncovered copy of its last
+// one, whose results are dropped. Returns the number of calls with a live
+// lane, in shaded_.
+size_t TileShader::shade_groups(const std::vector<PreparedDraw>& draws) {
+    size_t shaded = 0;
+    for (size_t i = 0; i < groups_.size();) {
+        const SetupTriangle* tri = groups_[i].triangle;
+        const PreparedDraw& d = draws[tri->draw];
+        LaneGroup call[kGroupsPerCall];
+        const auto first = uint32_t(i);
+        int n = 0;
+        for (; n < kGroupsPerCall && i < groups_.size() && groups_[i].triangle == tri; ++n, ++i)
+            call[n] = groups_[i].group;
+        for (int g = n; g < kGroupsPerCall; ++g) call[g] = LaneGroup{call[n - 1].x, call[n - 1].y, call[n - 1].half, 0};
+        interpolate_lanes(groups_[first].planes, d.varying_count, call, tri->front_facing, inputs_);
+        // Grow only: a new ShadedCall is 400 zeroed bytes, and the twin
+        // writes every field that is read.
+        if (shaded == shaded_.size()) shaded_.emplace_back();
+        ShadedCall& out = shaded_[shaded];
+        d.fragment->shade(inputs_, out.result);
+        out.live = simd::bits(and_not(inputs_.covered, out.result.discarded));
+        out.depth = inputs_.frag_coord.z;
+        out.first = first;
+        if (out.live) ++shaded;
+    }
+    return shaded;
+}
+
+void TileShader::merge(size_t calls, const std::vector<PreparedDraw>& draws, Framebuffer& fb) {
+    for (size_t k = 0; k < calls; ++k) {
+        const ShadedCall& call = shaded_[k];
+        const DrawState& state = draws[groups_[call.first].triangle->draw].call->state;
+        float* colour[kGroupsPerCall];
+        float* depth[kGroupsPerCall];
+        for (int g = 0; g < kGroupsPerCall; ++g) {
+            // A group without a live lane (padding, or all discarded) loads
+            // and stores a scratch copy, never the framebuffer.
+            if (!(call.live >> (g * kGroupLanes) & 0xff)) {
+                colour[g] = spare_colour_;
+                depth[g] = spare_depth_;
+                continue;
+            }
+            const LaneGroup& group = groups_[call.first + uint32_t(g)].group;
+            const size_t b = fb.block(group.x, group.y);
+            colour[g] = fb.group_colour(b, group.half);
+            depth[g] = fb.group_depth(b, group.half);
+        }
+        merge_lanes(state, call.result.colour, call.depth, Mask::from_bits(call.live), colour, depth);
+    }
+}
+
+}  // namespace st

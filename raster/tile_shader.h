@@ -1,0 +1,54 @@
+// tile_shader.h: one 64x64 tile from its bins to pixels: rasterization into
+// 8-lane groups (tile_raster.h), the fragment stage (interpolation and the
+// twin, kLanes lanes per call) and output merging (output_merge.h), for
+// every triangle the binner put there, in order. Each worker owns one
+// TileShader and its scratch; a tile is only ever shaded by one worker.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "frame/frame.h"
+#include "raster/binner.h"
+#include "raster/fragment_inputs.h"
+#include "raster/framebuffer.h"
+#include "raster/prepared_draw.h"
+#include "raster/stage_times.h"
+#include "raster/tile_raster.h"
+
+namespace st {
+
+class TileShader {
+public:
+    void shade(int tile, const Binner& binner, const std::vector<PreparedDraw>& draws, const Pass& pass,
+               Framebuffer& fb);
+
+    StageTimes times;  // raster, fragment and output time of the tiles shaded since reset
+
+private:
+    // A covered group of a block and the triangle that covers it.
+    struct TileGroup {
+        LaneGroup group;
+        const SetupTriangle* triangle = nullptr;
+        const Plane* planes = nullptr;  // its z, 1/w and varying planes
+    };
+    // One twin call after the fragment stage: what output merging needs.
+    struct ShadedCall {
+        FragmentResult result;
+        Float depth;          // gl_FragCoord.z, clamped
+        unsigned live = 0;    // covered and not discarded, bit i = lane i
+        uint32_t first = 0;   // its groups: groups_[first ...]
+    };
+
+    void rasterize(const SetupTriangle& tri, const Plane* planes, const TileRect& rect);
+    size_t shade_groups(const std::vector<PreparedDraw>& draws);
+    void merge(size_t calls, const std::vector<PreparedDraw>& draws, Framebuffer& fb);
+
+    std::vector<BlockCoverage> blocks_;
+    std::vector<TileGroup> groups_;
+    FragmentLanes inputs_;
+    std::vector<ShadedCall> shaded_;  // grows only
+    float spare_colour_[4 * kGroupLanes] = {}, spare_depth_[kGroupLanes] = {};
+};
+
+}  // namespace st
