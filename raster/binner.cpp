@@ -1,6 +1,8 @@
 // binner.cpp: see binner.h.
 #include "raster/binner.h"
 
+#include <algorithm>
+
 #include "raster/tile_raster.h"
 #include "raster/worker_pool.h"
 
@@ -31,6 +33,12 @@ void Binner::run(std::vector<PreparedDraw>& draws, int width, int height, const 
         SetupChunk& c = chunks_[size_t(i)];
         set_up(c, draws[c.draw], width, height, viewport);
     });
+    load_.assign(size_t(tiles()), 0);
+    for (size_t i = 0; i < used_; ++i)
+        for (size_t t = 0; t < load_.size(); ++t) load_[t] += chunks_[i].bins[t].size();
+    order_.resize(size_t(tiles()));
+    for (int t = 0; t < tiles(); ++t) order_[size_t(t)] = t;
+    std::stable_sort(order_.begin(), order_.end(), [&](int a, int b) { return load_[size_t(a)] > load_[size_t(b)]; });
 }
 
 void Binner::set_up(SetupChunk& chunk, const PreparedDraw& d, int width, int height, const Viewport& viewport) {

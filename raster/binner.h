@@ -42,12 +42,16 @@ public:
     int tiles() const { return tiles_x_ * tiles_y_; }
     size_t chunk_count() const { return used_; }
     const SetupChunk& chunk(size_t i) const { return chunks_[i]; }
+    // Every tile, those with the most binned triangles first (ties by index).
+    const std::vector<int>& tiles_by_load() const { return order_; }
 
 private:
     void set_up(SetupChunk& chunk, const PreparedDraw& draw, int width, int height, const Viewport& viewport);
 
     std::vector<SetupChunk> chunks_;  // grows only; the first used_ are this pass's
     size_t used_ = 0;
+    std::vector<int> order_;
+    std::vector<size_t> load_;
     int tiles_x_ = 0, tiles_y_ = 0;
 };
 
