@@ -87,6 +87,11 @@ struct Int {
 
     int32_t operator[](int lane) const { return v[lane]; }
     void set(int lane, int32_t x) { v[lane] = x; }
+    static Int load(const int32_t* p) {
+        Int r;
+        std::memcpy(&r.v, p, sizeof r.v);
+        return r;
+    }
 };
 
 // One bool per lane, held as all-ones or zero.
@@ -292,6 +297,36 @@ ST_INLINE Int mulhrs16(Int a, Int b) {
     I16V r;
     for (int i = 0; i < 2 * kLanes; ++i) r[i] = int16_t((int32_t(x[i]) * int32_t(y[i]) + 0x4000) >> 15);
     return Int(IntV(r));
+#endif
+}
+
+// Lane i of the result is lane idx[i] of table, for idx in [0, kLanes).
+ST_INLINE Int permute(Int table, Int idx) {
+#if defined(ST_SIMD_AVX512)
+    return Int(IntV(_mm512_permutexvar_epi32(__m512i(idx.v), __m512i(table.v))));
+#elif defined(ST_SIMD_AVX2)
+    return Int(IntV(_mm256_permutevar8x32_epi32(__m256i(table.v), __m256i(idx.v))));
+#else
+    return Int(__builtin_shuffle(table.v, idx.v & (kLanes - 1)));
+#endif
+}
+
+ST_INLINE int32_t reduce_min(Int x) {
+#if defined(ST_SIMD_AVX512)
+    return _mm512_reduce_min_epi32(__m512i(x.v));
+#else
+    int32_t r = x.v[0];
+    for (int i = 1; i < kLanes; ++i) r = x.v[i] < r ? x.v[i] : r;
+    return r;
+#endif
+}
+ST_INLINE int32_t reduce_max(Int x) {
+#if defined(ST_SIMD_AVX512)
+    return _mm512_reduce_max_epi32(__m512i(x.v));
+#else
+    int32_t r = x.v[0];
+    for (int i = 1; i < kLanes; ++i) r = x.v[i] > r ? x.v[i] : r;
+    return r;
 #endif
 }
 

@@ -136,13 +136,39 @@ ST_INLINE Int nearest_texel(Float s, int size, TextureWrap wrap) {
 // unorm8 to float: k * fl(1/255), one rounding (lp_bld_conv.c).
 ST_INLINE Float unorm8_to_float(Int k) { return simd::to_float(k) * Float(1.0f / 255.0f); }
 
+// When every lane's four taps lie within kLanes texels of a row and
+// kWindowRows rows (a magnified or unscaled texture, where neighbouring
+// pixels read neighbouring texels), the rows are loaded whole and each lane
+// picks its texels with a permute: the same texels as the gathers, without
+// them. Returns false (nothing written) otherwise.
+bool fetch_window(const std::vector<int32_t>& rgba8, int width, const LinearTaps8& u, const LinearTaps8& v,
+                  Int& t00, Int& t10, Int& t01, Int& t11) {
+    constexpr int kWindowRows = 6;
+    const int32_t u_lo = simd::reduce_min(simd::min(u.i0, u.i1)), u_hi = simd::reduce_max(simd::max(u.i0, u.i1));
+    const int32_t v_lo = simd::reduce_min(simd::min(v.i0, v.i1)), v_hi = simd::reduce_max(simd::max(v.i0, v.i1));
+    if (u_hi - u_lo >= kLanes || v_hi - v_lo >= kWindowRows) return false;
+    const int rows = v_hi - v_lo + 1;
+    const Int x0 = u.i0 - Int(u_lo), x1 = u.i1 - Int(u_lo);
+    for (int r = 0; r < rows; ++r) {
+        // In bounds: the texels have kLanes of padding past the last row.
+        const Int row = Int::load(&rgba8[size_t(v_lo + r) * size_t(width) + size_t(u_lo)]);
+        const Int a = simd::permute(row, x0), b = simd::permute(row, x1);
+        const Mask on0 = v.i0 == Int(v_lo + r), on1 = v.i1 == Int(v_lo + r);
+        t00 = r ? select(on0, a, t00) : a;
+        t10 = r ? select(on0, b, t10) : b;
+        t01 = r ? select(on1, a, t01) : a;
+        t11 = r ? select(on1, b, t11) : b;
+    }
+    return true;
+}
+
 glm::vec4 lane0(const Vec4& v) { return glm::vec4(v.x[0], v.y[0], v.z[0], v.w[0]); }
 
 }  // namespace
 
 Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
     if (texture.format == TextureFormat::RGBA8) {
-        rgba8_.assign(texture.texels8.size() / 4 + 1, 0);
+        rgba8_.assign(texture.texels8.size() / 4 + kLanes, 0);
         std::memcpy(rgba8_.data(), texture.texels8.data(), texture.texels8.size());
     }
 }
@@ -192,16 +218,18 @@ Vec4 Sampler2D::sample_linear_unorm8(const Vec2& st) const {
     // Every tap is inside the texture by construction (wrapped or clamped).
     // Each row's two taps are neighbours but where the wrap or the clamp
     // joins them otherwise; those lanes are fetched again.
-    const int32_t* texels = rgba8_.data();
-    const Int w(tex_->width);
-    const Int row0 = v.i0 * w, row1 = v.i1 * w;
     Int t00, t10, t01, t11;
-    simd::gather_pairs(texels, row0 + u.i0, t00, t10);
-    simd::gather_pairs(texels, row1 + u.i0, t01, t11);
-    const Mask apart = u.i1 != u.i0 + Int(1);
-    if (simd::any(apart)) {
-        t10 = select(apart, simd::gather(texels, row0 + u.i1, apart), t10);
-        t11 = select(apart, simd::gather(texels, row1 + u.i1, apart), t11);
+    if (!fetch_window(rgba8_, tex_->width, u, v, t00, t10, t01, t11)) {
+        const int32_t* texels = rgba8_.data();
+        const Int w(tex_->width);
+        const Int row0 = v.i0 * w, row1 = v.i1 * w;
+        simd::gather_pairs(texels, row0 + u.i0, t00, t10);
+        simd::gather_pairs(texels, row1 + u.i0, t01, t11);
+        const Mask apart = u.i1 != u.i0 + Int(1);
+        if (simd::any(apart)) {
+            t10 = select(apart, simd::gather(texels, row0 + u.i1, apart), t10);
+            t11 = select(apart, simd::gather(texels, row1 + u.i1, apart), t11);
+        }
     }
     // Two channels per lane, one in each 16-bit half (R and B, then G and
     // A), lerped at once.

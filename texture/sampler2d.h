@@ -37,8 +37,8 @@ private:
 
     const Texture* tex_;
     // RGBA8 texels as one int32 each (little-endian: R in the low byte), and
-    // one more, so that a texel and its right neighbour are always one
-    // 8-byte load.
+    // kLanes more, so that a texel and its right neighbour are always one
+    // 8-byte load and a row of kLanes texels from any texel one load.
     std::vector<int32_t> rgba8_;
 };
 
