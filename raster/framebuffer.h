@@ -9,7 +9,6 @@
 #pragma once
 
 #include <algorithm>
-#include <cstring>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -30,24 +29,6 @@ struct Framebuffer {
     Framebuffer(int w, int h)
         : width(w), height(h), blocks_x((w + kBlockSize - 1) / kBlockSize), blocks_y((h + kBlockSize - 1) / kBlockSize),
           colour(size_t(blocks_x) * blocks_y * 4 * kBlockLanes), depth(size_t(blocks_x) * blocks_y * kBlockLanes) {}
-
-    // Clears the blocks of the pixel rectangle [x0, x1) x [y0, y1), whose
-    // corners are multiples of 4 or the target's edge.
-    void clear(int x0, int y0, int x1, int y1, glm::vec4 clear_colour, float clear_depth) {
-        // One block's worth of cleared values, copied block by block.
-        float colour_pattern[4 * kBlockLanes], depth_pattern[kBlockLanes];
-        for (int g = 0; g < 2; ++g)
-            for (int ch = 0; ch < 4; ++ch)
-                std::fill_n(colour_pattern + g * kGroupFloats + ch * kGroupLanes, kGroupLanes, clear_colour[ch]);
-        std::fill_n(depth_pattern, kBlockLanes, clear_depth);
-        for (int y = y0; y < y1; y += kBlockSize) {
-            const size_t first = block(x0, y), count = size_t((x1 - x0 + kBlockSize - 1) / kBlockSize);
-            for (size_t b = first; b < first + count; ++b) {
-                std::memcpy(&colour[b * 4 * kBlockLanes], colour_pattern, sizeof colour_pattern);
-                std::memcpy(&depth[b * kBlockLanes], depth_pattern, sizeof depth_pattern);
-            }
-        }
-    }
 
     // The block whose lower-left pixel is (x, y), both multiples of 4.
     size_t block(int x, int y) const { return size_t(y / kBlockSize) * blocks_x + size_t(x / kBlockSize); }

@@ -36,27 +36,35 @@ inline V blend(BlendMode mode, const V& src, const V& dst) {
 }
 
 // Depth test (GL_LESS against the float depth buffer, written when
-// depth_write) and blending of the lanes in `live`. colour[g] points at the
-// framebuffer colour of the pixels of lanes [8g, 8g + 8), channel by
-// channel 8 floats apart; depth[g] at their depth values.
-inline void merge_lanes(const DrawState& state, const Vec4& src, Float z, Mask live, float* const* colour,
-                        float* const* depth) {
+// depth_write) and blending of the lanes in `live`, group by group: the
+// destination of lanes [8g, 8g + 8) is read from in_colour[g] and
+// in_depth[g] and written to out_colour[g] and out_depth[g] (the same
+// places, or a group's clear values in and the framebuffer out when the
+// tile has not written it yet). Colour is channel by channel, 8 floats
+// apart.
+inline void merge_lanes(const DrawState& state, const Vec4& src, Float z, Mask live,
+                        const float* const* in_colour, const float* const* in_depth, float* const* out_colour,
+                        float* const* out_depth) {
     Mask pass = live;
     if (state.depth_test) {
-        const Float stored = Float::load_groups(depth);
+        const Float stored = Float::load_groups(in_depth);
         pass = pass && z < stored;
-        if (state.depth_write) select(pass, z, stored).store_groups(depth);
+        if (state.depth_write) select(pass, z, stored).store_groups(out_depth);
     }
-    float* channel[4][kLanes / 8];
+    const float* in[4][kLanes / 8];
+    float* out[4][kLanes / 8];
     for (int c = 0; c < 4; ++c)
-        for (int g = 0; g < kLanes / 8; ++g) channel[c][g] = colour[g] + c * 8;
-    const Vec4 dst(Float::load_groups(channel[0]), Float::load_groups(channel[1]), Float::load_groups(channel[2]),
-                   Float::load_groups(channel[3]));
-    const Vec4 out = select(pass, blend(state.blend, src, dst), dst);
-    out.x.store_groups(channel[0]);
-    out.y.store_groups(channel[1]);
-    out.z.store_groups(channel[2]);
-    out.w.store_groups(channel[3]);
+        for (int g = 0; g < kLanes / 8; ++g) {
+            in[c][g] = in_colour[g] + c * 8;
+            out[c][g] = out_colour[g] + c * 8;
+        }
+    const Vec4 dst(Float::load_groups(in[0]), Float::load_groups(in[1]), Float::load_groups(in[2]),
+                   Float::load_groups(in[3]));
+    const Vec4 result = select(pass, blend(state.blend, src, dst), dst);
+    result.x.store_groups(out[0]);
+    result.y.store_groups(out[1]);
+    result.z.store_groups(out[2]);
+    result.w.store_groups(out[3]);
 }
 
 }  // namespace st

@@ -29,8 +29,10 @@ void TileShader::shade(int tile, const Binner& binner, const std::vector<Prepare
                         std::min(pass.width, (tile % tiles_x + 1) * kTileSize),
                         std::min(pass.height, (tile / tiles_x + 1) * kTileSize)};
     // The clear is part of the frame, as glClear is on the GL side; each
-    // tile clears its own blocks, in parallel and while they are in cache.
-    fb.clear(rect.x0, rect.y0, rect.x1, rect.y1, pass.clear_colour, pass.clear_depth);
+    // tile clears its own blocks, lazily (tile_shader.h).
+    for (int c = 0; c < 4; ++c) std::fill_n(clear_colour_ + c * kGroupLanes, kGroupLanes, pass.clear_colour[c]);
+    std::fill_n(clear_depth_, kGroupLanes, pass.clear_depth);
+    std::fill_n(written_, kTileGroups, false);
     size_t chunk = 0, next = 0;  // the next triangle: chunk's bin entry `next`
     while (chunk < binner.chunk_count()) {
         const auto t0 = Clock::now();
@@ -45,12 +47,26 @@ void TileShader::shade(int tile, const Binner& binner, const std::vector<Prepare
         const auto t1 = Clock::now();
         const size_t calls = shade_groups(draws);
         const auto t2 = Clock::now();
-        merge(calls, draws, fb);
+        merge(calls, draws, rect, fb);
         const auto t3 = Clock::now();
         times.raster_ms += ms_between(t0, t1);
         times.fragment_ms += ms_between(t1, t2);
         times.output_ms += ms_between(t2, t3);
     }
+    const auto t0 = Clock::now();
+    clear_unwritten(rect, fb);
+    times.output_ms += ms_between(t0, Clock::now());
+}
+
+void TileShader::clear_unwritten(const TileRect& rect, Framebuffer& fb) const {
+    for (int y = rect.y0; y < rect.y1; y += kBlockSize)
+        for (int x = rect.x0; x < rect.x1; x += kBlockSize)
+            for (int half = 0; half < 2; ++half) {
+                if (written_[tile_group(LaneGroup{x, y, half, 0}, rect)]) continue;
+                const size_t b = fb.block(x, y);
+                std::copy_n(clear_colour_, 4 * kGroupLanes, fb.group_colour(b, half));
+                std::copy_n(clear_depth_, kGroupLanes, fb.group_depth(b, half));
+            }
 }
 
 void TileShader::rasterize(const SetupTriangle& tri, const Plane* planes, const TileRect& rect) {
@@ -91,26 +107,41 @@ size_t TileShader::shade_groups(const std::vector<PreparedDraw>& draws) {
     return shaded;
 }
 
-void TileShader::merge(size_t calls, const std::vector<PreparedDraw>& draws, Framebuffer& fb) {
+void TileShader::merge(size_t calls, const std::vector<PreparedDraw>& draws, const TileRect& rect,
+                       Framebuffer& fb) {
     for (size_t k = 0; k < calls; ++k) {
         const ShadedCall& call = shaded_[k];
         const DrawState& state = draws[groups_[call.first].triangle->draw].call->state;
-        float* colour[kGroupsPerCall];
-        float* depth[kGroupsPerCall];
+        const bool stores_depth = state.depth_test && state.depth_write;
+        const float* in_colour[kGroupsPerCall];
+        const float* in_depth[kGroupsPerCall];
+        float* out_colour[kGroupsPerCall];
+        float* out_depth[kGroupsPerCall];
         for (int g = 0; g < kGroupsPerCall; ++g) {
             // A group without a live lane (padding, or all discarded) loads
             // and stores a scratch copy, never the framebuffer.
             if (!(call.live >> (g * kGroupLanes) & 0xff)) {
-                colour[g] = spare_colour_;
-                depth[g] = spare_depth_;
+                in_colour[g] = out_colour[g] = spare_colour_;
+                in_depth[g] = out_depth[g] = spare_depth_;
                 continue;
             }
             const LaneGroup& group = groups_[call.first + uint32_t(g)].group;
             const size_t b = fb.block(group.x, group.y);
-            colour[g] = fb.group_colour(b, group.half);
-            depth[g] = fb.group_depth(b, group.half);
+            out_colour[g] = fb.group_colour(b, group.half);
+            out_depth[g] = fb.group_depth(b, group.half);
+            bool& written = written_[tile_group(group, rect)];
+            if (written) {
+                in_colour[g] = out_colour[g];
+                in_depth[g] = out_depth[g];
+            } else {
+                in_colour[g] = clear_colour_;
+                in_depth[g] = clear_depth_;
+                if (!stores_depth) std::copy_n(clear_depth_, kGroupLanes, out_depth[g]);
+                written = true;
+            }
         }
-        merge_lanes(state, call.result.colour, call.depth, Mask::from_bits(call.live), colour, depth);
+        merge_lanes(state, call.result.colour, call.depth, Mask::from_bits(call.live), in_colour, in_depth,
+                    out_colour, out_depth);
     }
 }
 

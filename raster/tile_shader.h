@@ -42,7 +42,18 @@ private:
 
     void rasterize(const SetupTriangle& tri, const Plane* planes, const TileRect& rect);
     size_t shade_groups(const std::vector<PreparedDraw>& draws);
-    void merge(size_t calls, const std::vector<PreparedDraw>& draws, Framebuffer& fb);
+    void merge(size_t calls, const std::vector<PreparedDraw>& draws, const TileRect& rect, Framebuffer& fb);
+    void clear_unwritten(const TileRect& rect, Framebuffer& fb) const;
+
+    // The clear is lazy: a group the tile has not written yet reads its
+    // destination from these (the pass's clear values), and groups still
+    // unwritten at the end of the tile get them stored.
+    static constexpr int kTileGroups = 2 * (kTileSize / kBlockSize) * (kTileSize / kBlockSize);
+    static int tile_group(const LaneGroup& g, const TileRect& rect) {
+        return (((g.y - rect.y0) / kBlockSize) * (kTileSize / kBlockSize) + (g.x - rect.x0) / kBlockSize) * 2 + g.half;
+    }
+    bool written_[kTileGroups] = {};
+    float clear_colour_[4 * kGroupLanes] = {}, clear_depth_[kGroupLanes] = {};
 
     std::vector<BlockCoverage> blocks_;
     std::vector<TileGroup> groups_;
