@@ -3,6 +3,10 @@
 
 #include <algorithm>
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
 namespace st {
 
 namespace {
@@ -14,6 +18,17 @@ using I32Lanes = int32_t __attribute__((vector_size(4 * kBlockLanes)));
 
 constexpr I32Lanes kLaneX = {0, 1, 0, 1, 2, 3, 2, 3, 0, 1, 0, 1, 2, 3, 2, 3};
 constexpr I32Lanes kLaneY = {0, 0, 1, 1, 0, 0, 1, 1, 2, 2, 3, 3, 2, 2, 3, 3};
+
+// Bit i set where lane i is non-zero.
+inline unsigned lane_bits(I32Lanes m) {
+#if defined(__AVX512F__) && defined(__AVX512DQ__)
+    return _mm512_movepi32_mask(__m512i(m));
+#else
+    unsigned bits = 0;
+    for (int lane = 0; lane < kBlockLanes; ++lane) bits |= unsigned(m[lane] != 0) << lane;
+    return bits;
+#endif
+}
 
 static_assert(block_lane_x(5) == 3 && block_lane_y(5) == 0 && block_lane_x(10) == 0 && block_lane_y(10) == 3,
               "kLaneX/kLaneY follow shading/block_layout.h");
@@ -27,10 +42,9 @@ void rasterize_in_tile(const SetupTriangle& tri, const TileRect& tile, std::vect
     const EdgeFunction* e = tri.edge;
     // Each edge's value at every lane of a block, relative to the block's
     // corner: exact integers, so stepping equals evaluating at() per pixel.
+    const I64Lanes lane_x = __builtin_convertvector(kLaneX, I64Lanes), lane_y = __builtin_convertvector(kLaneY, I64Lanes);
     I64Lanes lane_offset[3];
-    for (int i = 0; i < 3; ++i)
-        for (int lane = 0; lane < kBlockLanes; ++lane)
-            lane_offset[i][lane] = e[i].dcdx * block_lane_x(lane) + e[i].dcdy * block_lane_y(lane);
+    for (int i = 0; i < 3; ++i) lane_offset[i] = e[i].dcdx * lane_x + e[i].dcdy * lane_y;
     // Over a block an edge function ranges from its corner value plus the
     // negative steps to the corner value plus the positive ones (it is
     // linear): a block all inside every edge and the box needs no per-pixel
@@ -56,8 +70,7 @@ void rasterize_in_tile(const SetupTriangle& tri, const TileRect& tile, std::vect
             const I32Lanes in_box = (px >= tri.x_min) & (px <= x_hi) & (py >= tri.y_min) & (py <= y_hi);
             const I64Lanes in_edges = (row[0] + lane_offset[0] > 0) & (row[1] + lane_offset[1] > 0) &
                                       (row[2] + lane_offset[2] > 0);
-            unsigned mask = 0;
-            for (int lane = 0; lane < kBlockLanes; ++lane) mask |= unsigned(in_box[lane] & in_edges[lane] & 1) << lane;
+            const unsigned mask = lane_bits(__builtin_convertvector(in_edges, I32Lanes) & in_box);
             if (mask) out.push_back({x, y, mask});
         }
     }
