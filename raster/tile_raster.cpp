@@ -13,11 +13,16 @@ namespace {
 
 // Sixteen lanes of a block, as plain vector-extension types (these are
 // integers: the lane width of the shading runtime does not matter here).
-using I64Lanes = int64_t __attribute__((vector_size(8 * kBlockLanes)));
+// Edge values are int64: a block's sixteen lanes as two halves of eight (one
+// zmm each with AVX-512; GCC splits a 16 x int64 vector badly).
+using I64Half = int64_t __attribute__((vector_size(8 * kBlockLanes / 2)));
+using I32Half = int32_t __attribute__((vector_size(4 * kBlockLanes / 2)));
 using I32Lanes = int32_t __attribute__((vector_size(4 * kBlockLanes)));
 
 constexpr I32Lanes kLaneX = {0, 1, 0, 1, 2, 3, 2, 3, 0, 1, 0, 1, 2, 3, 2, 3};
 constexpr I32Lanes kLaneY = {0, 0, 1, 1, 0, 0, 1, 1, 2, 2, 3, 3, 2, 2, 3, 3};
+constexpr I32Half kLaneXLow = {0, 1, 0, 1, 2, 3, 2, 3}, kLaneXHigh = {0, 1, 0, 1, 2, 3, 2, 3};
+constexpr I32Half kLaneYLow = {0, 0, 1, 1, 0, 0, 1, 1}, kLaneYHigh = {2, 2, 3, 3, 2, 2, 3, 3};
 
 // Bit i set where lane i is non-zero.
 inline unsigned lane_bits(I32Lanes m) {
@@ -42,9 +47,12 @@ void rasterize_in_tile(const SetupTriangle& tri, const TileRect& tile, std::vect
     const EdgeFunction* e = tri.edge;
     // Each edge's value at every lane of a block, relative to the block's
     // corner: exact integers, so stepping equals evaluating at() per pixel.
-    const I64Lanes lane_x = __builtin_convertvector(kLaneX, I64Lanes), lane_y = __builtin_convertvector(kLaneY, I64Lanes);
-    I64Lanes lane_offset[3];
-    for (int i = 0; i < 3; ++i) lane_offset[i] = e[i].dcdx * lane_x + e[i].dcdy * lane_y;
+    I64Half lane_offset[3][2];
+    for (int h = 0; h < 2; ++h) {
+        const I64Half lane_x = __builtin_convertvector(h ? kLaneXHigh : kLaneXLow, I64Half);
+        const I64Half lane_y = __builtin_convertvector(h ? kLaneYHigh : kLaneYLow, I64Half);
+        for (int i = 0; i < 3; ++i) lane_offset[i][h] = e[i].dcdx * lane_x + e[i].dcdy * lane_y;
+    }
     // Over a block an edge function ranges from its corner value plus the
     // negative steps to the corner value plus the positive ones (it is
     // linear): a block all inside every edge and the box needs no per-pixel
@@ -68,9 +76,14 @@ void rasterize_in_tile(const SetupTriangle& tri, const TileRect& tile, std::vect
             // A partly covered block: all sixteen lanes at once.
             const I32Lanes px = x + kLaneX, py = y + kLaneY;
             const I32Lanes in_box = (px >= tri.x_min) & (px <= x_hi) & (py >= tri.y_min) & (py <= y_hi);
-            const I64Lanes in_edges = (row[0] + lane_offset[0] > 0) & (row[1] + lane_offset[1] > 0) &
-                                      (row[2] + lane_offset[2] > 0);
-            const unsigned mask = lane_bits(__builtin_convertvector(in_edges, I32Lanes) & in_box);
+            I32Half in_edges[2];
+            for (int h = 0; h < 2; ++h)
+                in_edges[h] = __builtin_convertvector((row[0] + lane_offset[0][h] > 0) & (row[1] + lane_offset[1][h] > 0) &
+                                                          (row[2] + lane_offset[2][h] > 0),
+                                                      I32Half);
+            const I32Lanes edges = __builtin_shufflevector(in_edges[0], in_edges[1], 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10,
+                                                           11, 12, 13, 14, 15);
+            const unsigned mask = lane_bits(edges & in_box);
             if (mask) out.push_back({x, y, mask});
         }
     }
