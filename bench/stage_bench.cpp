@@ -92,7 +92,7 @@ void BM_InterpolateBlock(benchmark::State& state) {
     LaneGroup groups[2] = {{100, 200, 0, 0xff}, {100, 200, 1, 0xff}};
     for (auto _ : state)
         for (int part = 0; part < kBlockLanes / kLanes; ++part) {
-            interpolate_lanes(planes.data(), 3, groups + part, true, lanes);
+            interpolate_lanes(planes.data(), 3, ~0u, groups + part, true, lanes);
             benchmark::DoNotOptimize(lanes);
         }
     state.SetItemsProcessed(int64_t(state.iterations()) * kBlockLanes);

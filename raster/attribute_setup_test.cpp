@@ -55,7 +55,7 @@ BlockInputs interpolate(const Vert v[3], int bx, int by) {
         FragmentLanes lanes;
         LaneGroup groups[kLanes / kGroupLanes];
         for (int g = 0; g < kLanes / kGroupLanes; ++g) groups[g] = {bx, by, part * (kLanes / kGroupLanes) + g, 0xff};
-        interpolate_lanes(planes.data(), 1, groups, true, lanes);
+        interpolate_lanes(planes.data(), 1, ~0u, groups, true, lanes);
         for (int lane = 0; lane < kLanes; ++lane) {
             const Vec4& c = lanes.varyings[0];
             const Vec4& f = lanes.frag_coord;
@@ -118,7 +118,7 @@ TEST(Interpolation, QuadDerivatives) {
     FragmentLanes lanes;
     LaneGroup groups[kLanes / kGroupLanes];
     for (int g = 0; g < kLanes / kGroupLanes; ++g) groups[g] = {8, 20, g, 0xff};
-    interpolate_lanes(planes.data(), 1, groups, true, lanes);
+    interpolate_lanes(planes.data(), 1, ~0u, groups, true, lanes);
     const Float ddx = dFdx(lanes.varyings[0].x), ddy = dFdy(lanes.varyings[0].y);
     for (int lane = 0; lane < kLanes; ++lane) {
         EXPECT_FLOAT_EQ(ddx[lane], 0.25f);

@@ -67,6 +67,7 @@ void CpuRenderer::prepare(const Frame& frame) {
             d.vertex->bind(d.bindings);
             d.fragment->bind(d.bindings);
             d.varying_count = d.vertex->varying_count();
+            d.inputs_read = d.fragment->inputs_read();
         }
     }
 }

@@ -2,6 +2,7 @@
 #include "raster/fragment_inputs.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "shading/block_layout.h"
 
@@ -42,8 +43,8 @@ ST_INLINE Float per_group(const LaneGroup* groups, int LaneGroup::*field) {
 
 }  // namespace
 
-void interpolate_lanes(const Plane* planes, int varying_count, const LaneGroup* groups, bool front_facing,
-                       FragmentLanes& out) {
+void interpolate_lanes(const Plane* planes, int varying_count, uint32_t components, const LaneGroup* groups,
+                       bool front_facing, FragmentLanes& out) {
     const Plane& z_plane = planes[0];
     const Plane& inv_w_plane = planes[1];
     const Plane* varying_planes = planes + 2;
@@ -66,10 +67,12 @@ void interpolate_lanes(const Plane* planes, int varying_count, const LaneGroup* 
     const Float inv_w = at(inv_w_plane, px, py);
     const Float w = Float(1.0f) / inv_w;
     out.frag_coord = Vec4(px + Float(0.5f), py + Float(0.5f), z, inv_w);
+    const Float not_read(std::numeric_limits<float>::quiet_NaN());
     for (int slot = 0; slot < varying_count; ++slot) {
         const Plane* p = varying_planes + slot * 4;
-        out.varyings[size_t(slot)] = Vec4(at(p[0], px, py) * w, at(p[1], px, py) * w, at(p[2], px, py) * w,
-                                          at(p[3], px, py) * w);
+        static constexpr Float Vec4::*kComponent[4] = {&Vec4::x, &Vec4::y, &Vec4::z, &Vec4::w};
+        for (int c = 0; c < 4; ++c)
+            out.varyings[size_t(slot)].*kComponent[c] = components >> (4 * slot + c) & 1 ? at(p[c], px, py) * w : not_read;
     }
 }
 

@@ -22,8 +22,10 @@ struct LaneGroup {
     unsigned mask = 0;    // bit i = lane i of the group covered
 };
 
-// groups[0 .. kLanes / 8) fill lanes [8g, 8g + 8).
-void interpolate_lanes(const Plane* planes, int varying_count, const LaneGroup* groups, bool front_facing,
-                       FragmentLanes& out);
+// groups[0 .. kLanes / 8) fill lanes [8g, 8g + 8). Only the varying
+// components in `components` (FragmentTwin::inputs_read) are interpolated;
+// the others are NaN.
+void interpolate_lanes(const Plane* planes, int varying_count, uint32_t components, const LaneGroup* groups,
+                       bool front_facing, FragmentLanes& out);
 
 }  // namespace st

@@ -22,6 +22,7 @@ struct PreparedDraw {
     std::deque<Sampler2D> samplers;       // deque: Bindings keeps pointers
     Bindings bindings;
     int varying_count = 0;
+    uint32_t inputs_read = ~0u;           // fragment->inputs_read()
     std::vector<VertexOut> shaded;        // vertex stage output, per vertex
     std::vector<WindowPos> window;        // viewport transform of `shaded`
     std::vector<unsigned> clip_masks;     // outcodes of `shaded`

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -77,11 +78,24 @@ struct FragmentResult {
     Mask discarded;                                 // lanes that executed discard
 };
 
+// Bit 4 * slot + c: component c (x, y, z, w) of varying `slot`, as a twin
+// declares what its main() reads: reads(v_uv, "xy") | reads(v_normal, "xyz").
+constexpr uint32_t reads(int slot, const char* components) {
+    uint32_t bits = 0;
+    for (const char* c = components; *c; ++c) bits |= 1u << (4 * slot + (*c == 'w' ? 3 : *c - 'x'));
+    return bits;
+}
+
 class FragmentTwin {
 public:
     virtual ~FragmentTwin() = default;
     virtual void bind(const Bindings&) {}
     virtual void shade(const FragmentLanes& in, FragmentResult& out) const = 0;
+    // The varying components main() reads (reads() above). The pipeline
+    // interpolates only these, as llvmpipe interpolates only the inputs a
+    // shader uses, and fills the others with NaN, so that a component read
+    // but not declared shows in every comparison.
+    virtual uint32_t inputs_read() const { return ~0u; }
 };
 
 // What a twin's main() reads: the inputs of every lane at once.

@@ -16,6 +16,7 @@ public:
 class BackgroundFragment final : public FragmentProgram<BackgroundFragment> {
 public:
     void bind(const Bindings& b) override { painting_ = &b.sampler("painting"); }
+    uint32_t inputs_read() const override;
     Vec4 main(const Fragment& frag) const;
 
 private:

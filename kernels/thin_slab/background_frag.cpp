@@ -8,6 +8,8 @@ namespace {
 constexpr int v_uv = 0;  // inputs
 }  // namespace
 
+uint32_t BackgroundFragment::inputs_read() const { return reads(v_uv, "xy"); }
+
 Vec4 BackgroundFragment::main(const Fragment& frag) const {
     return painting_->sample(frag.varying(v_uv).xy());
 }

@@ -31,6 +31,7 @@ private:
 class ThinSlabFragment final : public FragmentProgram<ThinSlabFragment> {  // thin_slab.frag
 public:
     void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
     Vec4 main(const Fragment& frag) const;
 
 private:
@@ -62,6 +63,7 @@ private:
 class ThinSlabLitFragment final : public FragmentProgram<ThinSlabLitFragment> {  // thin_slab_lit.frag
 public:
     void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
     Vec4 main(const Fragment& frag) const;
 
 private:
@@ -71,6 +73,7 @@ private:
 class ThinSlabBaselineFragment final : public FragmentProgram<ThinSlabBaselineFragment> {  // thin_slab_baseline.frag
 public:
     void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
     Vec4 main(const Fragment& frag) const;
 
 private:
@@ -81,6 +84,7 @@ private:
 class ThinSlabSweepFragment final : public FragmentProgram<ThinSlabSweepFragment> {  // thin_slab_sweep.frag
 public:
     void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override { return 0; }
     Vec4 main(const Fragment& frag) const;
 
 private:

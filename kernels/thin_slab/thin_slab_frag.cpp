@@ -10,6 +10,10 @@ namespace {
 constexpr int v_position = 0, v_normal = 1, v_uv = 2;  // inputs
 }  // namespace
 
+uint32_t ThinSlabFragment::inputs_read() const {
+    return reads(v_position, "xyz") | reads(v_normal, "xyz") | reads(v_uv, "xy");
+}
+
 void ThinSlabFragment::bind(const Bindings& b) {
     u_.read(b, true);
     flag_ = &b.sampler("flag");

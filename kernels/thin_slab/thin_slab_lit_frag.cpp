@@ -8,6 +8,8 @@ namespace {
 constexpr int v_radiance = 0, v_uv = 1;  // inputs
 }  // namespace
 
+uint32_t ThinSlabLitFragment::inputs_read() const { return reads(v_radiance, "xyzw") | reads(v_uv, "xy"); }
+
 void ThinSlabLitFragment::bind(const Bindings& b) { flag_ = &b.sampler("flag"); }
 
 Vec4 ThinSlabLitFragment::main(const Fragment& frag) const {

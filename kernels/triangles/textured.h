@@ -14,6 +14,7 @@ public:
 class TexturedFragment final : public FragmentProgram<TexturedFragment> {
 public:
     void bind(const Bindings& b) override { tex_ = &b.sampler("tex"); }
+    uint32_t inputs_read() const override;
     Vec4 main(const Fragment& frag) const;
 
 private:
