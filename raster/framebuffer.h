@@ -1,6 +1,8 @@
 // framebuffer.h: an RGBA32F colour target with a 32-bit float depth buffer,
-// stored the way the fragment stage writes it: in 4x4 blocks (row-major
-// over blocks, GL window order, row 0 at the bottom), each block as its two
+// stored the way the fragment stage writes it: tile by tile (64x64, row-major
+// over tiles, GL window order, row 0 at the bottom), so that a tile's pixels
+// are one contiguous stretch of memory; in a tile, 4x4 blocks row-major;
+// each block as its two
 // 8-lane groups (shading/block_layout.h), and each group channel by
 // channel, 8 values in lane order. The lanes of one group are then 8
 // consecutive floats per channel, so depth test and blending load and store
@@ -14,6 +16,7 @@
 #include <glm/vec4.hpp>
 
 #include "image/image.h"
+#include "raster/tile_raster.h"
 #include "shading/block_layout.h"
 
 namespace st {
@@ -22,16 +25,25 @@ struct Framebuffer {
     static constexpr int kGroupFloats = 4 * kGroupLanes;  // one group's colour
 
     int width = 0, height = 0;
+    static constexpr int kTileBlocks = kTileSize / kBlockSize;  // blocks on a tile's side
+
     int blocks_x = 0, blocks_y = 0;
+    int tiles_x = 0, tiles_y = 0;
     std::vector<float> colour;  // [block][group][channel][lane]
     std::vector<float> depth;   // [block][group][lane]
 
     Framebuffer(int w, int h)
         : width(w), height(h), blocks_x((w + kBlockSize - 1) / kBlockSize), blocks_y((h + kBlockSize - 1) / kBlockSize),
-          colour(size_t(blocks_x) * blocks_y * 4 * kBlockLanes), depth(size_t(blocks_x) * blocks_y * kBlockLanes) {}
+          tiles_x((blocks_x + kTileBlocks - 1) / kTileBlocks), tiles_y((blocks_y + kTileBlocks - 1) / kTileBlocks),
+          colour(size_t(tiles_x) * tiles_y * kTileBlocks * kTileBlocks * 4 * kBlockLanes),
+          depth(size_t(tiles_x) * tiles_y * kTileBlocks * kTileBlocks * kBlockLanes) {}
 
     // The block whose lower-left pixel is (x, y), both multiples of 4.
-    size_t block(int x, int y) const { return size_t(y / kBlockSize) * blocks_x + size_t(x / kBlockSize); }
+    size_t block(int x, int y) const {
+        const int bx = x / kBlockSize, by = y / kBlockSize;
+        const size_t tile = size_t(by / kTileBlocks) * size_t(tiles_x) + size_t(bx / kTileBlocks);
+        return tile * kTileBlocks * kTileBlocks + size_t(by % kTileBlocks) * kTileBlocks + size_t(bx % kTileBlocks);
+    }
     // Channel ch of lane i of group g is group_colour(b, g)[ch * 8 + i].
     float* group_colour(size_t b, int g) { return &colour[(b * 2 + size_t(g)) * kGroupFloats]; }
     float* group_depth(size_t b, int g) { return &depth[(b * 2 + size_t(g)) * kGroupLanes]; }
