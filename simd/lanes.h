@@ -102,11 +102,7 @@ struct Mask {
     explicit Mask(IntV x) : v(x) {}
     explicit Mask(bool b) : v(IntV ST_SPLAT(b ? -1 : 0)) {}
     // Bit i of `bits` is lane i.
-    static Mask from_bits(unsigned bits) {
-        IntV lane_bit;
-        for (int i = 0; i < kLanes; ++i) lane_bit[i] = int32_t(1u << i);
-        return Mask((lane_bit & int32_t(bits)) != 0);
-    }
+    static Mask from_bits(unsigned bits);
     bool operator[](int lane) const { return v[lane] != 0; }
 };
 
@@ -163,19 +159,35 @@ ST_INLINE Float select(Mask m, Float a, Float b) { return Float(m.v ? a.v : b.v)
 ST_INLINE Int select(Mask m, Int a, Int b) { return Int(m.v ? a.v : b.v); }
 ST_INLINE Mask select(Mask m, Mask a, Mask b) { return Mask(m.v ? a.v : b.v); }
 
-ST_INLINE bool any(Mask m) {
-    IntV x = m.v;
-    int32_t r = 0;
-    for (int i = 0; i < kLanes; ++i) r |= x[i];
-    return r != 0;
+#if ST_LANES == 16
+inline constexpr IntV kLaneBit = {1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096, 8192, 16384, 32768};
+#else
+inline constexpr IntV kLaneBit = {1, 2, 4, 8, 16, 32, 64, 128};
+#endif
+
+ST_INLINE Mask Mask::from_bits(unsigned bits) {
+#if defined(ST_SIMD_AVX512)
+    return Mask(IntV(_mm512_movm_epi32(__mmask16(bits))));
+#else
+    return Mask((kLaneBit & int32_t(bits)) != 0);
+#endif
 }
-ST_INLINE bool all(Mask m) { return !any(!m); }
-ST_INLINE bool none(Mask m) { return !any(m); }
+
+// Bit i set where lane i is true.
 ST_INLINE unsigned bits(Mask m) {
+#if defined(ST_SIMD_AVX512)
+    return _mm512_movepi32_mask(__m512i(m.v));
+#elif defined(ST_SIMD_AVX2)
+    return unsigned(_mm256_movemask_ps(__m256(m.v)));
+#else
     unsigned r = 0;
     for (int i = 0; i < kLanes; ++i) r |= unsigned(m.v[i] != 0) << i;
     return r;
+#endif
 }
+ST_INLINE bool any(Mask m) { return bits(m) != 0; }
+ST_INLINE bool all(Mask m) { return bits(m) == (1u << kLanes) - 1; }
+ST_INLINE bool none(Mask m) { return bits(m) == 0; }
 
 ST_INLINE Int bit_cast_int(Float x) { return Int(IntV(x.v)); }
 ST_INLINE Float bit_cast_float(Int x) { return Float(FloatV(x.v)); }
