@@ -11,7 +11,7 @@ namespace st {
 namespace {
 // Triangles per chunk: enough to keep a worker busy for a while, few enough
 // that a scene of a few thousand triangles still spreads over the workers.
-constexpr size_t kChunkTriangles = 512;
+constexpr size_t kChunkTriangles = 256;
 }  // namespace
 
 void Binner::run(std::vector<PreparedDraw>& draws, int width, int height, const Viewport& viewport,

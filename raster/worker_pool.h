@@ -6,6 +6,7 @@
 // what keeps images independent of thread count and scheduling.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <functional>
 #include <mutex>
@@ -34,6 +35,8 @@ private:
     const std::function<void(int, int)>* job_ = nullptr;
     int count_ = 0, next_ = 0, busy_ = 0;
     unsigned generation_ = 0;
+    std::atomic<unsigned> published_{0};  // generation_, readable without the lock
+    std::atomic<unsigned> finished_{0};   // the last generation whose jobs are all done
     bool stop_ = false;
 };
 
