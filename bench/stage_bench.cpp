@@ -11,6 +11,7 @@
 #include "raster/attribute_setup.h"
 #include "raster/fragment_inputs.h"
 #include "raster/output_merge.h"
+#include "shading/block_layout.h"
 #include "texture/sampler2d.h"
 #include "raster/tile_raster.h"
 #include "raster/triangle_setup.h"
@@ -100,21 +101,33 @@ void BM_InterpolateBlock(benchmark::State& state) {
 }
 BENCHMARK(BM_InterpolateBlock);
 
-void BM_BlendOneSrcAlpha(benchmark::State& state) {
-    std::vector<glm::vec4> dst(4096, glm::vec4(0.3f, 0.4f, 0.5f, 1.0f));
-    const glm::vec4 src(0.1f, 0.2f, 0.3f, 0.4f);
+// Depth-free blending of kLanes lanes into one framebuffer group pair, as
+// the output stage does it (load, blend, select, store).
+void BM_Blend(benchmark::State& state, BlendMode mode) {
+    alignas(64) float colour[2][4 * kGroupLanes], depth[2][kGroupLanes] = {};
+    for (auto& g : colour) std::fill(std::begin(g), std::end(g), 0.5f);
+    const Vec4 src(Float(0.1f), Float(0.2f), Float(0.3f), Float(0.4f));
+    DrawState ds;
+    ds.blend = mode;
+    const float* in_colour[2] = {colour[0], colour[1]};
+    const float* in_depth[2] = {depth[0], depth[1]};
+    float* out_colour[2] = {colour[0], colour[1]};
+    float* out_depth[2] = {depth[0], depth[1]};
     for (auto _ : state) {
-        for (auto& d : dst) d = blend(BlendMode::OneSrcAlpha, src, d);
-        benchmark::DoNotOptimize(dst.data());
+        merge_lanes(ds, src, Float(0.5f), Mask(true), in_colour, in_depth, out_colour, out_depth);
+        benchmark::DoNotOptimize(colour);
     }
-    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(dst.size()));
+    state.SetItemsProcessed(int64_t(state.iterations()) * kLanes);
     state.SetLabel("pixels");
 }
-BENCHMARK(BM_BlendOneSrcAlpha);
+BENCHMARK_CAPTURE(BM_Blend, none, BlendMode::None);
+BENCHMARK_CAPTURE(BM_Blend, one_src_alpha, BlendMode::OneSrcAlpha);
+BENCHMARK_CAPTURE(BM_Blend, src_alpha_one_minus_src_alpha, BlendMode::SrcAlphaOneMinusSrcAlpha);
 
-Texture noise_texture(TextureFormat format) {
+Texture noise_texture(TextureFormat format, TextureFilter filter) {
     Texture t;
     t.format = format;
+    t.filter = filter;
     t.width = t.height = 256;
     std::mt19937 rng(1);
     for (int i = 0; i < 256 * 256 * 4; ++i) {
@@ -124,20 +137,35 @@ Texture noise_texture(TextureFormat format) {
     return t;
 }
 
-void BM_SampleBilinear(benchmark::State& state, TextureFormat format) {
-    const Texture t = noise_texture(format);
+// texture() on all lanes at once. "random": coordinates anywhere in
+// [-1, 2)^2 (every lane its own texels); "unscaled": a 4x4 block mapped
+// texel for texel, as a full-screen quad over a texture of the screen's size
+// reads it.
+void BM_Sample(benchmark::State& state, TextureFormat format, TextureFilter filter, bool random) {
+    const Texture t = noise_texture(format, filter);
     const Sampler2D s(t);
-    std::vector<glm::vec2> uv;
+    std::vector<Vec2> uv(4096 / kLanes);
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> u(-1.0f, 2.0f);
-    for (int i = 0; i < 4096; ++i) uv.emplace_back(u(rng), u(rng));
+    for (size_t i = 0; i < uv.size(); ++i)
+        for (int lane = 0; lane < kLanes; ++lane) {
+            const int block = int(i) % 4096, bx = block % 64 * 4, by = block / 64 % 64 * 4;
+            const float x = random ? u(rng) : (float(bx + block_lane_x(lane)) + 0.5f) / 256.0f;
+            const float y = random ? u(rng) : (float(by + block_lane_y(lane % 16)) + 0.5f) / 256.0f;
+            uv[i].x.set(lane, x);
+            uv[i].y.set(lane, y);
+        }
     for (auto _ : state)
         for (const auto& c : uv) benchmark::DoNotOptimize(s.sample(c));
-    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(uv.size()));
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(uv.size()) * kLanes);
     state.SetLabel("samples");
 }
-BENCHMARK_CAPTURE(BM_SampleBilinear, rgba8, TextureFormat::RGBA8);
-BENCHMARK_CAPTURE(BM_SampleBilinear, rgba32f, TextureFormat::RGBA32F);
+BENCHMARK_CAPTURE(BM_Sample, rgba8_linear_random, TextureFormat::RGBA8, TextureFilter::Linear, true);
+BENCHMARK_CAPTURE(BM_Sample, rgba8_linear_unscaled, TextureFormat::RGBA8, TextureFilter::Linear, false);
+BENCHMARK_CAPTURE(BM_Sample, rgba8_nearest_random, TextureFormat::RGBA8, TextureFilter::Nearest, true);
+BENCHMARK_CAPTURE(BM_Sample, rgba32f_linear_random, TextureFormat::RGBA32F, TextureFilter::Linear, true);
+BENCHMARK_CAPTURE(BM_Sample, rgba32f_linear_unscaled, TextureFormat::RGBA32F, TextureFilter::Linear, false);
+BENCHMARK_CAPTURE(BM_Sample, rgba32f_nearest_random, TextureFormat::RGBA32F, TextureFilter::Nearest, true);
 
 }  // namespace
 }  // namespace st
