@@ -153,6 +153,24 @@ ST_INLINE Float select(Mask c, Float a, Float b) { return simd::select(c, a, b);
 ST_INLINE Vec3 select(Mask c, const Vec3& a, const Vec3& b) { return st::select(c, a, b); }
 ST_INLINE Vec4 select(Mask c, const Vec4& a, const Vec4& b) { return st::select(c, a, b); }
 
+// GLSL's `if (c) return then(); else return otherwise();` (or a ternary
+// whose sides are expensive): each lane gets the side its condition picks,
+// and a side that no lane takes is not evaluated, as a GPU skips a branch
+// no invocation takes. Twin functions have no side effects, so this gives
+// the bits of select(c, then(), otherwise()) at a fraction of the cost
+// when a whole vector goes one way.
+template <class Then, class Otherwise>
+ST_INLINE auto if_else(bool c, Then then, Otherwise otherwise) {
+    return c ? then() : otherwise();
+}
+template <class Then, class Otherwise>
+ST_INLINE auto if_else(Mask c, Then then, Otherwise otherwise) {
+    const unsigned lanes = simd::bits(c);
+    if (lanes == (1u << kLanes) - 1) return then();
+    if (lanes == 0) return otherwise();
+    return glsl::select(c, then(), otherwise());
+}
+
 glm::vec4 mul(const glm::mat4& m, const glm::vec4& v);  // GLSL m * v
 
 }  // namespace st::glsl

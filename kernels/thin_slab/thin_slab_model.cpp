@@ -1,8 +1,8 @@
 // thin_slab_model.cpp: twin of glsl/thin_slab/thin_slab_model.glsl, line for
 // line; see the GLSL for the derivations. Literals are the GLSL's, as
-// floats. An `if` that returns on each side is glsl::select here (both sides
-// evaluated, each lane takes one), as NIR turns it into bcsel; the result is
-// the same for every lane.
+// floats. An `if` that returns on each side, and a ternary with costly
+// sides, is glsl::if_else here: each lane takes its side, and a side no lane
+// takes is skipped; the result is select()'s for every lane.
 #include "kernels/thin_slab/thin_slab_model.h"
 
 #include "shading/glsl_math.h"
@@ -11,9 +11,10 @@ namespace st {
 
 template <class F>
 F one_minus_exp_neg(F x) {
-    return glsl::select(x < F(SERIES_LIMIT),
-                  x * (F(1.0f) - x * (F(0.5f) - x * (F(0.16666667f) - x * (F(0.041666668f) - x * F(0.0083333338f))))),
-                  F(1.0f) - glsl::exp(-x));
+    return glsl::if_else(
+        x < F(SERIES_LIMIT),
+        [&] { return x * (F(1.0f) - x * (F(0.5f) - x * (F(0.16666667f) - x * (F(0.041666668f) - x * F(0.0083333338f))))); },
+        [&] { return F(1.0f) - glsl::exp(-x); });
 }
 
 template <class F>
@@ -30,8 +31,9 @@ F frontlit_factor(F tau1, F mu, F mu0) {
 template <class F>
 F backlit_factor(F tau1, F mu, F mu0) {
     F d = tau1 * (mu - mu0) / (mu * mu0);
-    return glsl::select(glsl::abs(d) < F(SERIES_LIMIT), tau1 / mu * glsl::exp(-tau1 / mu0) * expm1_over_x(d),
-                  mu0 / (mu - mu0) * (glsl::exp(-tau1 / mu) - glsl::exp(-tau1 / mu0)));
+    return glsl::if_else(
+        glsl::abs(d) < F(SERIES_LIMIT), [&] { return tau1 / mu * glsl::exp(-tau1 / mu0) * expm1_over_x(d); },
+        [&] { return mu0 / (mu - mu0) * (glsl::exp(-tau1 / mu) - glsl::exp(-tau1 / mu0)); });
 }
 
 template <class F>
@@ -55,7 +57,8 @@ template <class F>
 Vec4Of<F> thin_slab(const Vec3Of<F>& p, const Vec3Of<F>& n, const Vec3Of<F>& eye, const Vec3Of<F>& light, F power,
                     F tau1, const Vec3Of<F>& albedo) {
     SlabGeometry<F> g = slab_geometry<F>(p, n, eye, light);
-    F factor = glsl::select(g.frontlit, frontlit_factor(tau1, g.mu, g.mu0), backlit_factor(tau1, g.mu, g.mu0));
+    F factor = glsl::if_else(
+        g.frontlit, [&] { return frontlit_factor(tau1, g.mu, g.mu0); }, [&] { return backlit_factor(tau1, g.mu, g.mu0); });
     F radiance = point_light_irradiance(power, g.mu0, g.r2) * F(INV_4PI) * factor;
     F alpha = glsl::exp(-tau1 / g.mu);
     return Vec4Of<F>(albedo * radiance, alpha);
