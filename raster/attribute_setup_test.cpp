@@ -43,13 +43,19 @@ struct BlockInputs {
     std::array<glm::vec4, kBlockLanes> colour, frag_coord;
 };
 
-BlockInputs interpolate(const Vert v[3], int bx, int by) {
+// z, 1/w and colour planes of the triangle, as setup builds them.
+std::vector<Plane> planes_of(const Vert v[3]) {
     std::array<glm::vec4, 3> colours = {v[0].colour, v[1].colour, v[2].colour};
     SetupVertex sv[3];
     for (int i = 0; i < 3; ++i)
         sv[i] = {WindowPos{float(v[i].x), float(v[i].y), 0.5f, float(1.0 / v[i].w)}, &colours[size_t(i)]};
     std::vector<Plane> planes;
     setup_attribute_planes(sv[0], sv[1], sv[2], 1, planes);
+    return planes;
+}
+
+BlockInputs interpolate(const Vert v[3], int bx, int by) {
+    const std::vector<Plane> planes = planes_of(v);
     BlockInputs out;
     for (int part = 0; part < kBlockLanes / kLanes; ++part) {
         FragmentLanes lanes;
@@ -109,12 +115,7 @@ TEST(Interpolation, PerspectiveCorrect) {
 // every lane.
 TEST(Interpolation, QuadDerivatives) {
     const Vert v[3] = {{0.5, 0.5, 1, {0, 0, 0, 0}}, {64.5, 0.5, 1, {16, 0, 0, 0}}, {0.5, 64.5, 1, {0, -8, 0, 0}}};
-    std::array<glm::vec4, 3> colours = {v[0].colour, v[1].colour, v[2].colour};
-    SetupVertex sv[3];
-    for (int i = 0; i < 3; ++i)
-        sv[i] = {WindowPos{float(v[i].x), float(v[i].y), 0.5f, float(1.0 / v[i].w)}, &colours[size_t(i)]};
-    std::vector<Plane> planes;
-    setup_attribute_planes(sv[0], sv[1], sv[2], 1, planes);
+    const std::vector<Plane> planes = planes_of(v);
     FragmentLanes lanes;
     LaneGroup groups[kLanes / kGroupLanes];
     for (int g = 0; g < kLanes / kGroupLanes; ++g) groups[g] = {8, 20, g, 0xff};

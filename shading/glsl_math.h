@@ -18,7 +18,8 @@
 //   each product rounded (GLSL IR's matrix lowering).
 // - a*b + c in GLSL is never fused (lower_ffma32): twins write it plainly,
 //   and -ffp-contract=off keeps the compiler from fusing it.
-// - max/min return the other operand when one is NaN (std::fmax).
+// - max/min return the other operand when one is NaN, as std::fmax does for
+//   quiet NaNs (what llvmpipe returns for NaN is not yet measured).
 // The arithmetic follows gallivm/lp_bld_arit.c (lp_build_exp2,
 // lp_build_polynomial, lp_build_ifloor_fract, lp_build_rsqrt);
 // docs/llvmpipe/ has the reading.
@@ -45,8 +46,10 @@ ST_INLINE float fma(float a, float b, float c) { return std::fma(a, b, c); }
 ST_INLINE float floor(float x) { return std::floor(x); }
 ST_INLINE float sqrt(float x) { return std::sqrt(x); }
 ST_INLINE float abs(float x) { return std::fabs(x); }
-ST_INLINE float max(float a, float b) { return std::fmax(a, b); }
-ST_INLINE float min(float a, float b) { return std::fmin(a, b); }
+// The lanes' rule (simd/lanes.h), not std::fmax, which may return NaN for a
+// signalling NaN: one definition of max and min for both.
+ST_INLINE float max(float a, float b) { return a != a ? b : (a < b ? b : a); }
+ST_INLINE float min(float a, float b) { return a != a ? b : (b < a ? b : a); }
 // 2^i for an integral float i in [-126, 128]: the exponent field alone
 // (128 gives +inf's pattern).
 ST_INLINE float exponent_to_float(float i) {
@@ -117,9 +120,9 @@ ST_INLINE Float inversesqrt(Float x) { return Float(1.0f) / simd::sqrt(x); }
 
 ST_INLINE float abs(float x) { return std::fabs(x); }
 ST_INLINE Float abs(Float x) { return simd::abs(x); }
-ST_INLINE float max(float a, float b) { return std::fmax(a, b); }
+ST_INLINE float max(float a, float b) { return scalar::max(a, b); }
 ST_INLINE Float max(Float a, Float b) { return simd::max(a, b); }
-ST_INLINE float min(float a, float b) { return std::fmin(a, b); }
+ST_INLINE float min(float a, float b) { return scalar::min(a, b); }
 ST_INLINE Float min(Float a, Float b) { return simd::min(a, b); }
 
 // Measured against llvmpipe (thin-slab scenes, bit for bit): the three

@@ -226,8 +226,9 @@ ST_INLINE Float floor(Float x) {
 
 ST_INLINE Float abs(Float x) { return bit_cast_float(bit_cast_int(x) & Int(0x7fffffff)); }
 
-// fmax/fmin semantics: a NaN operand yields the other operand (as
-// std::fmax, and as the scalar twins have always computed max()).
+// A NaN operand yields the other operand (std::fmax's rule for quiet NaNs,
+// here for signalling ones too); otherwise the larger (smaller), the first
+// on a tie.
 ST_INLINE Float max(Float a, Float b) {
     const Float larger = select(a < b, b, a);  // NaN in a or b: a
     return select(a != a, b, larger);

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Every lane width gives the same bits: builds tests/lane_hashes for the
+# Every lane width gives the same bits: builds tests/lane_hashes (and the
+# lane operations' unit tests, lane_unit_tests) for the
 # other lane widths of simd/lanes.h (SHADERTWIN_SIMD=avx2: 8 lanes with AVX2
 # intrinsics; generic: 8 lanes of plain vector code, without AVX, FMA3 or
 # SSSE3, so every portable fallback runs), each in its own build folder, and
@@ -29,13 +30,15 @@ for flavour in avx2 generic; do
   dir="$build/lanes-$flavour"
   flags=""
   [ "$flavour" = generic ] && flags="-DSHADERTWIN_FMA=OFF"
-  if [ ! -f "$dir/CMakeCache.txt" ]; then
-    # LTO off and -O1: other code generation from the same source must give
-    # the same bits too.
-    cmake -S "$src" -B "$dir" -DSHADERTWIN_SIMD="$flavour" $flags -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -DCMAKE_INTERPROCEDURAL_OPTIMIZATION=OFF >/dev/null
-  fi
-  cmake --build "$dir" --target lane_hashes -j "$(nproc)" >/dev/null
+  # LTO off and -O1: other code generation from the same source must give
+  # the same bits too. (Configured every time: it is quick, and it picks up
+  # new targets in a folder left by an earlier run.)
+  cmake -S "$src" -B "$dir" -DSHADERTWIN_SIMD="$flavour" $flags -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -DCMAKE_INTERPROCEDURAL_OPTIMIZATION=OFF >/dev/null
+  cmake --build "$dir" --target lane_hashes lane_unit_tests -j "$(nproc)" >/dev/null
+  "$dir/tests/lane_unit_tests" --gtest_brief=1 >"$dir/lane_unit_tests.out" 2>&1 ||
+    { cat "$dir/lane_unit_tests.out" >&2; fail "$flavour: lane unit tests"; }
+  echo "ok   $flavour: $(tail -1 "$dir/lane_unit_tests.out")"
   "$dir/tests/lane_hashes" 2 >"$dir/lane_hashes.out"
   check "$flavour" "$dir/lane_hashes.out"
 done

@@ -1,0 +1,172 @@
+// lanes_test.cpp: every lane of a lane operation computes what the scalar
+// operation computes for that lane's value alone (NaN, infinities, denormals
+// and out-of-range conversions included), and the few operations that look
+// across lanes (masks, permutes, reductions, gathers) do what they say.
+#include "simd/lanes.h"
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <type_traits>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace st::simd {
+
+namespace {
+
+uint32_t bits_of(float x) { return std::bit_cast<uint32_t>(x); }
+
+// Floats that break things: signed zeros, denormals, NaN, infinities, the
+// int32 conversion limits, and random values of every magnitude.
+std::vector<float> awkward_floats() {
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    std::vector<float> v = {0.0f, -0.0f, 1e-45f, -1e-45f, 1e-39f, 0.5f, -0.5f, 1.5f, 2.5f, -2.5f, 1.0f,
+                            inf, -inf, nan, -nan, 2147483520.0f, 2147483648.0f, -2147483648.0f, -2147483904.0f,
+                            1e30f, -1e30f, 8388607.5f, 0.49999997f};
+    std::mt19937 rng(7);
+    for (int i = 0; i < 4000; ++i) {
+        const uint32_t b = uint32_t(rng());
+        v.push_back(std::bit_cast<float>(b));  // every exponent, NaNs included
+    }
+    return v;
+}
+
+// Runs op on kLanes of `values` at a time and scalar(x) on each, lane by lane.
+template <class LaneOp, class ScalarOp>
+void expect_lanewise(const std::vector<float>& values, LaneOp op, ScalarOp scalar, const char* what) {
+    for (size_t i = 0; i + kLanes <= values.size(); i += kLanes) {
+        const Float x = Float::load(&values[i]);
+        const auto r = op(x);
+        for (int lane = 0; lane < kLanes; ++lane) {
+            const auto want = scalar(values[i + size_t(lane)]);
+            if constexpr (std::is_same_v<std::remove_cv_t<decltype(want)>, float>)
+                ASSERT_EQ(bits_of(r[lane]), bits_of(want)) << what << "(" << values[i + size_t(lane)] << ")";
+            else
+                ASSERT_EQ(r[lane], want) << what << "(" << values[i + size_t(lane)] << ")";
+        }
+    }
+}
+
+// What x86's cvttps2dq and cvtps2dq give: the value, or INT32_MIN outside
+// the int32 range and for NaN.
+int32_t x86_trunc(float x) { return x >= -2147483648.0f && x < 2147483648.0f ? int32_t(x) : INT32_MIN; }
+int32_t x86_round(float x) {
+    return x >= -2147483648.0f && x < 2147483648.0f ? int32_t(std::nearbyint(x)) : INT32_MIN;
+}
+
+}  // namespace
+
+TEST(Lanes, ArithmeticIsTheScalarsLaneByLane) {
+    const std::vector<float> v = awkward_floats();
+    std::vector<float> w(v.rbegin(), v.rend());
+    std::vector<float> u(v);
+    std::rotate(u.begin(), u.begin() + 5, u.end());
+    for (size_t i = 0; i + kLanes <= v.size(); i += kLanes) {
+        const Float a = Float::load(&v[i]), b = Float::load(&w[i]), c = Float::load(&u[i]);
+        const Float sum = a + b, product = a * b, quotient = a / b, fused = fma(a, b, c);
+        const Float larger = max(a, b), smaller = min(a, b);
+        for (int lane = 0; lane < kLanes; ++lane) {
+            const float x = v[i + size_t(lane)], y = w[i + size_t(lane)], z = u[i + size_t(lane)];
+            ASSERT_EQ(bits_of(sum[lane]), bits_of(x + y));
+            ASSERT_EQ(bits_of(product[lane]), bits_of(x * y));
+            ASSERT_EQ(bits_of(quotient[lane]), bits_of(x / y));
+            ASSERT_EQ(bits_of(fused[lane]), bits_of(std::fma(x, y, z))) << x << " " << y << " " << z;
+            // A NaN operand gives the other one (signalling NaNs too, where
+            // std::fmax may return NaN); otherwise the larger (smaller).
+            const float want_max = std::isnan(x) ? y : std::isnan(y) ? x : (x < y ? y : x);
+            const float want_min = std::isnan(x) ? y : std::isnan(y) ? x : (y < x ? y : x);
+            ASSERT_EQ(bits_of(larger[lane]), bits_of(want_max)) << x << " " << y;
+            ASSERT_EQ(bits_of(smaller[lane]), bits_of(want_min)) << x << " " << y;
+        }
+    }
+}
+
+TEST(Lanes, RoundingAndConversionsAreDefinedForEveryInput) {
+    const std::vector<float> v = awkward_floats();
+    expect_lanewise(v, [](Float x) { return sqrt(x); }, [](float x) { return std::sqrt(x); }, "sqrt");
+    expect_lanewise(v, [](Float x) { return floor(x); }, [](float x) { return std::floor(x); }, "floor");
+    expect_lanewise(v, [](Float x) { return abs(x); }, [](float x) { return std::fabs(x); }, "abs");
+    expect_lanewise(v, [](Float x) { return itrunc(x); }, x86_trunc, "itrunc");
+    expect_lanewise(v, [](Float x) { return iround(x); }, x86_round, "iround");
+}
+
+TEST(Lanes, MasksAndBits) {
+    for (unsigned b : {0u, 1u, 0x5u, (1u << kLanes) - 1, 1u << (kLanes - 1), 0xa5a5u & ((1u << kLanes) - 1)}) {
+        const Mask m = Mask::from_bits(b);
+        EXPECT_EQ(bits(m), b);
+        EXPECT_EQ(any(m), b != 0);
+        EXPECT_EQ(all(m), b == (1u << kLanes) - 1);
+        EXPECT_EQ(none(m), b == 0);
+        for (int lane = 0; lane < kLanes; ++lane) EXPECT_EQ(m[lane], bool(b >> lane & 1));
+    }
+    EXPECT_EQ(bits(Float(std::numeric_limits<float>::quiet_NaN()) < Float(1.0f)), 0u);
+}
+
+TEST(Lanes, PermuteReduceAndMulhrs) {
+    Int table, idx;
+    for (int lane = 0; lane < kLanes; ++lane) {
+        table.set(lane, 100 + lane * 7 - (lane == 3 ? 500 : 0));
+        idx.set(lane, (lane * 5 + 3) % kLanes);
+    }
+    const Int p = permute(table, idx);
+    int32_t lo = table[0], hi = table[0];
+    for (int lane = 0; lane < kLanes; ++lane) {
+        EXPECT_EQ(p[lane], table[idx[lane]]);
+        lo = std::min(lo, table[lane]);
+        hi = std::max(hi, table[lane]);
+    }
+    EXPECT_EQ(reduce_min(table), lo);
+    EXPECT_EQ(reduce_max(table), hi);
+    // pmulhrsw per 16-bit half, against its definition.
+    std::mt19937 rng(3);
+    for (int round = 0; round < 1000; ++round) {
+        Int a, b;
+        for (int lane = 0; lane < kLanes; ++lane) {
+            a.set(lane, int32_t(rng()));
+            b.set(lane, int32_t(rng()));
+        }
+        const Int r = mulhrs16(a, b);
+        for (int lane = 0; lane < kLanes; ++lane)
+            for (int half = 0; half < 2; ++half) {
+                const auto x = int16_t(uint32_t(a[lane]) >> (16 * half)), y = int16_t(uint32_t(b[lane]) >> (16 * half));
+                const auto want = int16_t((int32_t(x) * int32_t(y) + 0x4000) >> 15);
+                ASSERT_EQ(int16_t(uint32_t(r[lane]) >> (16 * half)), want);
+            }
+    }
+}
+
+// Inactive lanes read nothing: their indices point far outside the array.
+TEST(Lanes, GathersReadOnlyActiveLanes) {
+    std::vector<int32_t> ints(64);
+    std::vector<float> floats(64);
+    for (int i = 0; i < 64; ++i) {
+        ints[size_t(i)] = i * 3;
+        floats[size_t(i)] = float(i) * 0.5f;
+    }
+    Int index;
+    unsigned active = 0;
+    for (int lane = 0; lane < kLanes; ++lane) {
+        const bool on = lane % 3 != 1;
+        index.set(lane, on ? (lane * 11) % 64 : 1 << 30);
+        active |= unsigned(on) << lane;
+    }
+    const Int gi = gather(ints.data(), index, Mask::from_bits(active));
+    const Float gf = gather(floats.data(), index, Mask::from_bits(active));
+    Int first, second;
+    Int pair_index;
+    for (int lane = 0; lane < kLanes; ++lane) pair_index.set(lane, (lane * 11) % 63);
+    gather_pairs(ints.data(), pair_index, first, second);
+    for (int lane = 0; lane < kLanes; ++lane) {
+        const bool on = active >> lane & 1;
+        EXPECT_EQ(gi[lane], on ? ints[size_t(index[lane])] : 0);
+        EXPECT_EQ(gf[lane], on ? floats[size_t(index[lane])] : 0.0f);
+        EXPECT_EQ(first[lane], ints[size_t(pair_index[lane])]);
+        EXPECT_EQ(second[lane], ints[size_t(pair_index[lane]) + 1]);
+    }
+}
+
+}  // namespace st::simd
