@@ -12,6 +12,7 @@
 // in range by construction.
 #include "texture/sampler2d.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace st {
@@ -141,6 +142,49 @@ ST_INLINE Float unorm8_to_float(Int k) { return simd::to_float(k) * Float(1.0f /
 // pixels read neighbouring texels), the rows are loaded whole and each lane
 // picks its texels with a permute: the same texels as the gathers, without
 // them. Returns false (nothing written) otherwise.
+#if defined(ST_SIMD_AVX512)
+// The same for AVX-512 and its two 8-lane groups (4x2 pixels each), without
+// reductions: each group's window starts at its lane 0's taps (the lowest
+// for a texture that is not mirrored on the screen), and is 8 texels by 2
+// rows for each row of taps. The four tables of a call (each group's two rows
+// under v.i0 and under v.i1) make two 32-entry permutes per tap row.
+using simd::IntV;
+
+bool fetch_window_groups(const std::vector<int32_t>& rgba8, int width, int height, const LinearTaps8& u,
+                         const LinearTaps8& v, Int& t00, Int& t10, Int& t01, Int& t11) {
+    const __m512i lane0_of_group = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
+    auto group_base = [&](Int x) { return Int(IntV(_mm512_permutexvar_epi32(lane0_of_group, __m512i(x.v)))); };
+    const Int u_base = group_base(u.i0), v0_base = group_base(v.i0), v1_base = group_base(v.i1);
+    const Int x0 = u.i0 - u_base, x1 = u.i1 - u_base, y0 = v.i0 - v0_base, y1 = v.i1 - v1_base;
+    using UV = uint32_t __attribute__((vector_size(64)));
+    const auto outside = [](Int d, uint32_t n) { return __m512i(IntV(UV(d.v) >= n)); };
+    const __m512i bad = _mm512_or_si512(_mm512_or_si512(outside(x0, 8), outside(x1, 8)),
+                                        _mm512_or_si512(outside(y0, 2), outside(y1, 2)));
+    if (_mm512_test_epi32_mask(bad, bad)) return false;
+    // Row r of group g's window under base row b: 8 texels from its u_base.
+    auto row = [&](int g, int32_t b, int r) {
+        const int32_t y = std::min(b + r, height - 1);  // a row past the edge is loaded but never picked
+        return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(
+            &rgba8[size_t(y) * size_t(width) + size_t(u_base[8 * g])]));
+    };
+    auto table = [&](const Int& base, __m512i& lo, __m512i& hi) {
+        // lo = row 0 of both groups, hi = row 1: entry r * 16 + g * 8 + x.
+        lo = _mm512_inserti64x4(_mm512_castsi256_si512(row(0, base[0], 0)), row(1, base[8], 0), 1);
+        hi = _mm512_inserti64x4(_mm512_castsi256_si512(row(0, base[0], 1)), row(1, base[8], 1), 1);
+    };
+    __m512i a_lo, a_hi, b_lo, b_hi;
+    table(v0_base, a_lo, a_hi);
+    table(v1_base, b_lo, b_hi);
+    const __m512i group8 = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
+    auto index = [&](Int y, Int x) { return _mm512_add_epi32(_mm512_add_epi32(__m512i((y << 4).v), group8), __m512i(x.v)); };
+    t00 = Int(IntV(_mm512_permutex2var_epi32(a_lo, index(y0, x0), a_hi)));
+    t10 = Int(IntV(_mm512_permutex2var_epi32(a_lo, index(y0, x1), a_hi)));
+    t01 = Int(IntV(_mm512_permutex2var_epi32(b_lo, index(y1, x0), b_hi)));
+    t11 = Int(IntV(_mm512_permutex2var_epi32(b_lo, index(y1, x1), b_hi)));
+    return true;
+}
+#endif
+
 bool fetch_window(const std::vector<int32_t>& rgba8, int width, const LinearTaps8& u, const LinearTaps8& v,
                   Int& t00, Int& t10, Int& t01, Int& t11) {
     constexpr int kWindowRows = 6;
@@ -219,7 +263,13 @@ Vec4 Sampler2D::sample_linear_unorm8(const Vec2& st) const {
     // Each row's two taps are neighbours but where the wrap or the clamp
     // joins them otherwise; those lanes are fetched again.
     Int t00, t10, t01, t11;
-    if (!fetch_window(rgba8_, tex_->width, u, v, t00, t10, t01, t11)) {
+#if defined(ST_SIMD_AVX512)
+    const bool windowed = fetch_window_groups(rgba8_, tex_->width, tex_->height, u, v, t00, t10, t01, t11) ||
+                          fetch_window(rgba8_, tex_->width, u, v, t00, t10, t01, t11);
+#else
+    const bool windowed = fetch_window(rgba8_, tex_->width, u, v, t00, t10, t01, t11);
+#endif
+    if (!windowed) {
         const int32_t* texels = rgba8_.data();
         const Int w(tex_->width);
         const Int row0 = v.i0 * w, row1 = v.i1 * w;
