@@ -21,6 +21,7 @@ times = {"1": [], "2": []}
 for row in csv.reader(sys.stdin):
     times[row[0]].append(float(row[3]))
 one, two = statistics.median(times["1"]), statistics.median(times["2"])
-print(f"{sys.argv[1]}: 1 thread {one:.3f} ms, 2 threads {two:.3f} ms, scaling {one / two:.2f} (medians of {len(times[\"1\"])})")
+rounds = len(times["1"])
+print(f"{sys.argv[1]}: 1 thread {one:.3f} ms, 2 threads {two:.3f} ms, scaling {one / two:.2f} (medians of {rounds})")
 ' "$scene"
 done
