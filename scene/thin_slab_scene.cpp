@@ -7,6 +7,7 @@
 // camera matrix, the light position, the procedural flag and painting. The
 // `host` variant additionally evaluates Eq. 4-8 per vertex at the start of
 // every frame (ThinSlabHostStage), as the paper's CPU variant does.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -32,13 +33,29 @@ public:
     ThinSlabHostStage(glm::vec3 eye, glm::vec3 light, float power, float tau1, glm::vec3 albedo)
         : eye_(eye), light_(light), power_(power), tau1_(tau1), albedo_(albedo) {}
 
+    // kLanes vertices at a time through the model's lane form (the same
+    // template as the per-vertex one, so the same bits per vertex); a last
+    // short batch repeats its final vertex in the spare lanes.
     void run(VertexArray& va) const override {
-        for (int v = 0; v < va.vertex_count(); ++v) {
-            glm::vec4* a = &va.data[size_t(v) * size_t(va.attribute_count)];
-            a[kHostRadiance] = thin_slab(glm::vec3(a[kHostPosition]), glsl::normalize(glm::vec3(a[kHostNormal])),
-                                         eye_, light_, power_, tau1_, albedo_);
+        const int n = va.vertex_count();
+        for (int first = 0; first < n; first += kLanes) {
+            Vec3 p, normal;
+            for (int lane = 0; lane < kLanes; ++lane) {
+                const glm::vec4* a = va.vertex(std::min(first + lane, n - 1));
+                for (int c = 0; c < 3; ++c) {
+                    (p.*kComponent[c]).set(lane, a[kHostPosition][c]);
+                    (normal.*kComponent[c]).set(lane, a[kHostNormal][c]);
+                }
+            }
+            const Vec4 radiance = thin_slab(p, glsl::normalize(normal), Vec3(eye_), Vec3(light_), Float(power_),
+                                            Float(tau1_), Vec3(albedo_));
+            for (int lane = 0; lane < kLanes && first + lane < n; ++lane)
+                va.data[size_t(first + lane) * size_t(va.attribute_count) + kHostRadiance] =
+                    glm::vec4(radiance.x[lane], radiance.y[lane], radiance.z[lane], radiance.w[lane]);
         }
     }
+
+    static constexpr Float Vec3::*kComponent[3] = {&Vec3::x, &Vec3::y, &Vec3::z};
 
 private:
     glm::vec3 eye_, light_;
