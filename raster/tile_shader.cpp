@@ -33,6 +33,9 @@ void TileShader::shade(int tile, const Binner& binner, const std::vector<Prepare
     // tile clears its own blocks, lazily (tile_shader.h).
     for (int c = 0; c < 4; ++c) std::fill_n(clear_colour_ + c * kGroupLanes, kGroupLanes, pass.clear_colour[c]);
     std::fill_n(clear_depth_, kGroupLanes, pass.clear_depth);
+    // Depth is only ever read by a depth test: in a pass without one it is
+    // neither cleared nor written (read_back() returns colour only).
+    depth_used_ = std::any_of(draws.begin(), draws.end(), [](const PreparedDraw& d) { return d.call->state.depth_test; });
     std::fill_n(written_, kTileGroups, false);
     size_t chunk = 0, next = 0;  // the next triangle: chunk's bin entry `next`
     while (chunk < binner.chunk_count()) {
@@ -66,7 +69,7 @@ void TileShader::clear_unwritten(const TileRect& rect, Framebuffer& fb) const {
                 if (written_[tile_group(LaneGroup{x, y, half, 0}, rect)]) continue;
                 const size_t b = fb.block(x, y);
                 std::copy_n(clear_colour_, 4 * kGroupLanes, fb.group_colour(b, half));
-                std::copy_n(clear_depth_, kGroupLanes, fb.group_depth(b, half));
+                if (depth_used_) std::copy_n(clear_depth_, kGroupLanes, fb.group_depth(b, half));
             }
 }
 
@@ -137,7 +140,7 @@ void TileShader::merge(size_t calls, const std::vector<PreparedDraw>& draws, con
             } else {
                 in_colour[g] = clear_colour_;
                 in_depth[g] = clear_depth_;
-                if (!stores_depth) std::copy_n(clear_depth_, kGroupLanes, out_depth[g]);
+                if (!stores_depth && depth_used_) std::copy_n(clear_depth_, kGroupLanes, out_depth[g]);
                 written = true;
             }
         }
