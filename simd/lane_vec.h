@@ -45,10 +45,6 @@ struct Vec4 {
     Vec3 xyz() const { return {x, y, z}; }
 };
 
-// GLSL's swizzle-free conversions: vec3(v4) and vec2(v4) keep the first
-// components.
-inline Vec3 to_vec3(const Vec4& v) { return {v.x, v.y, v.z}; }
-
 #define ST_LANE_VEC_OPS(V, ...)                                                              \
     ST_INLINE V operator+(const V& a, const V& b) { return {__VA_ARGS__(+)}; }               \
     ST_INLINE V operator-(const V& a, const V& b) { return {__VA_ARGS__(-)}; }               \
@@ -69,7 +65,6 @@ ST_LANE_VEC_OPS(Vec4, ST_VEC4_EACH)
 ST_INLINE Vec3 operator*(const Vec3& a, Float s) { return {a.x * s, a.y * s, a.z * s}; }
 ST_INLINE Vec3 operator*(Float s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
 ST_INLINE Vec4 operator*(const Vec4& a, Float s) { return {a.x * s, a.y * s, a.z * s, a.w * s}; }
-ST_INLINE Vec3 operator-(const Vec3& a) { return {-a.x, -a.y, -a.z}; }
 
 ST_INLINE Vec3 select(Mask m, const Vec3& a, const Vec3& b) {
     return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z)};

@@ -101,16 +101,9 @@ ST_INLINE LinearTaps8 linear_taps_fixed(Float s, int size, TextureWrap wrap) {
 
 // 8-bit lerp with an 8-bit weight, as pmulhrsw computes it in
 // lp_build_lerp_simple: ((w * (d << 7)) >> 14 + 1) >> 1, kept to 8 bits and
-// added to v0 modulo 256. In 32-bit lanes the product is exact, so this is
-// pmulhrsw's integer for every input.
-ST_INLINE Int lerp8(Int w, Int v0, Int v1) {
-    const Int product = w * ((v1 - v0) << 7);
-    const Int rounded = ((product >> 14) + Int(1)) >> 1;
-    return (v0 + (rounded & Int(0xff))) & Int(0xff);
-}
-
-// lerp8 on two channels at once, one per 16-bit half of each lane, with
-// the weight in both halves: pmulhrsw itself where the build has it.
+// added to v0 modulo 256; here on two channels at once, one per 16-bit half
+// of each lane, with the weight in both halves (pmulhrsw itself where the
+// build has it).
 ST_INLINE Int lerp8_pairs(Int w, Int v0, Int v1) {
     const Int rounded = simd::mulhrs16(w, simd::shl16(simd::sub16(v1, v0), 7));
     return (v0 + (rounded & Int(0x00ff00ff))) & Int(0x00ff00ff);
