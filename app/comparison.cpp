@@ -53,7 +53,8 @@ nlohmann::json metrics_json(const CompareMetrics& m) {
             {"mean_abs_diff", m.mean_abs_diff},
             {"rms_error", m.rms_error},
             {"psnr", m.psnr},
-            {"nonfinite", m.nonfinite_a + m.nonfinite_b}};
+            {"nonfinite", m.nonfinite_a + m.nonfinite_b},
+            {"nonfinite_mismatch", m.nonfinite_mismatch}};
 }
 
 nlohmann::json to_json(const SceneComparison& c) {

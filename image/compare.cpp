@@ -40,10 +40,13 @@ CompareMetrics compare_images(const Image& a, const Image& b) {
             const float va = a.rgba[p * 4 + c], vb = b.rgba[p * 4 + c];
             if (!std::isfinite(va)) ++m.nonfinite_a;
             if (!std::isfinite(vb)) ++m.nonfinite_b;
+            const bool same_bits = std::bit_cast<uint32_t>(va) == std::bit_cast<uint32_t>(vb);
+            if (!same_bits && !(std::isfinite(va) && std::isfinite(vb))) ++m.nonfinite_mismatch;
             const int d8 = diff_8bit(va, vb);
             m.max_diff_8bit = std::max(m.max_diff_8bit, d8);
             pixel_same8 &= d8 == 0;
-            pixel_same_float &= std::bit_cast<uint32_t>(va) == std::bit_cast<uint32_t>(vb);
+            pixel_same_float &= same_bits;
+            if (same_bits) continue;  // no difference, even for inf and NaN
             const double rel = std::abs(double(va) - double(vb)) / std::max(std::abs(double(vb)), 1e-3);
             // A NaN on either side makes the relative difference infinite.
             m.max_rel_diff_float = std::max(m.max_rel_diff_float, std::isnan(rel) ? INFINITY : rel);

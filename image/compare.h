@@ -17,6 +17,7 @@ struct CompareMetrics {
     // From OpenImageIO's ImageBufAlgo::compare, on the float images.
     double max_abs_diff = 0, mean_abs_diff = 0, rms_error = 0, psnr = 0;
     long nonfinite_a = 0, nonfinite_b = 0;  // NaN or infinite channels
+    long nonfinite_mismatch = 0;            // non-finite on a side, bits differ
 };
 
 // `b` is the reference (GL) in max_rel_diff_float. Sizes must match

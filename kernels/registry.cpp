@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 
+#include "kernels/conformance/conformance.h"
 #include "kernels/thin_slab/background.h"
 #include "kernels/harness/coverage.h"
 #include "kernels/triangles/interp.h"
@@ -39,6 +40,12 @@ const std::map<std::string, Factory<FragmentTwin>>& fragment_twins() {
         {"thin_slab_lit", [] { return std::make_unique<ThinSlabLitFragment>(); }},
         {"thin_slab_baseline", [] { return std::make_unique<ThinSlabBaselineFragment>(); }},
         {"thin_slab_sweep", [] { return std::make_unique<ThinSlabSweepFragment>(); }},
+        {"loop_exit", [] { return std::make_unique<LoopExitFragment>(); }},
+        {"branch_texture", [] { return std::make_unique<BranchTextureFragment>(); }},
+        {"derivatives", [] { return std::make_unique<DerivativesFragment>(); }},
+        {"discard", [] { return std::make_unique<DiscardFragment>(); }},
+        {"non_finite", [] { return std::make_unique<NonFiniteFragment>(); }},
+        {"loop_budget", [] { return std::make_unique<LoopBudgetFragment>(); }},
     };
     return twins;
 }

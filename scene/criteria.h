@@ -16,6 +16,10 @@ struct Criteria {
     int max_diff_8bit = 1;
     double max_rel_diff_float = 1e-5;
     double min_identical_fraction_8bit = 0.0;
+    // "nonfinite": "identical" allows inf and NaN where both backends write
+    // the same bits (a shader that divides by zero on purpose); by default
+    // any non-finite channel fails.
+    bool nonfinite_if_identical = false;
     std::string rationale;  // why these bounds (free text from the scene file)
 
     static Criteria read(JsonReader& scene);  // from the optional "criteria" object

@@ -24,6 +24,7 @@ constexpr int kMaxResolution = 8192;
 const std::map<std::string, SceneBuilder>& scene_builders() {
     static const std::map<std::string, SceneBuilder> builders = {
         {"triangles", build_triangles_scene},
+        {"conformance", build_conformance_scene},
         {"thin-slab", build_thin_slab_scene},
         {"thin-slab-sweep", build_thin_slab_sweep_scene},
     };

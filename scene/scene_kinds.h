@@ -22,6 +22,7 @@ using SceneBuilder = std::function<Frame(JsonReader& scene, SceneSize size)>;
 const std::map<std::string, SceneBuilder>& scene_builders();
 
 Frame build_triangles_scene(JsonReader& scene, SceneSize size);
+Frame build_conformance_scene(JsonReader& scene, SceneSize size);
 Frame build_thin_slab_scene(JsonReader& scene, SceneSize size);
 Frame build_thin_slab_sweep_scene(JsonReader& scene, SceneSize size);
 

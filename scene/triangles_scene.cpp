@@ -1,37 +1,20 @@
 // triangles_scene.cpp: the "triangles" kind: triangles listed in the file,
 // drawn in order with the interpolating program (glsl/interp.*) in one draw.
-#include <cmath>
-
 #include "scene/input_error.h"
 #include "scene/scene_kinds.h"
 #include "scene/texture_patterns.h"
+#include "scene/triangle_list.h"
 
 namespace st {
 
 namespace {
 
-constexpr double kHuge = 1e30;          // coordinates beyond this are a typo
-constexpr size_t kMaxTriangles = 1 << 20;
+constexpr double kHuge = 1e30;  // colours beyond this are a typo
 
 BlendMode parse_blend(const std::string& name) {
     if (name == "one_src_alpha") return BlendMode::OneSrcAlpha;
     if (name == "alpha") return BlendMode::SrcAlphaOneMinusSrcAlpha;
     return BlendMode::None;
-}
-
-// Pixel positions map to clip space with w = 1: x_clip = x * (2/W) - 1. For
-// power-of-two sizes every step is exact, so a vertex given at 12.5 lands
-// on window x = 12.5 to the bit on both backends.
-glm::vec4 pixel_to_clip(const std::vector<double>& p, SceneSize size) {
-    const float x = float(p[0]) * (2.0f / float(size.width)) - 1.0f;
-    const float y = float(p[1]) * (2.0f / float(size.height)) - 1.0f;
-    const float depth = p.size() > 2 ? float(p[2]) : 0.5f;
-    return glm::vec4(x, y, depth * 2.0f - 1.0f, 1.0f);
-}
-
-glm::vec4 clip_position(const std::vector<double>& p) {
-    return glm::vec4(float(p[0]), float(p[1]), p.size() > 2 ? float(p[2]) : 0.0f,
-                     p.size() > 3 ? float(p[3]) : 1.0f);
 }
 
 glm::vec4 to_vec4(const std::vector<double>& v) {
@@ -61,54 +44,7 @@ Frame build_triangles_scene(JsonReader& scene, SceneSize size) {
     draw.state.blend = parse_blend(scene.choice_or("blend", "none", {"none", "one_src_alpha", "alpha"}));
     draw.vertices.attribute_count = textured ? 3 : 2;  // position, colour[, uv]
 
-    for (JsonReader& t : scene.objects("triangles", 1, kMaxTriangles)) {
-        const auto& positions = t.array("positions", 3, 3);
-        std::vector<std::vector<double>> colours;
-        if (t.has("colour")) {
-            const auto c = t.numbers("colour", 3, 4, -kHuge, kHuge);
-            colours.assign(3, c);
-        } else {
-            const auto& cs = t.array("colours", 3, 3);
-            for (size_t i = 0; i < 3; ++i) {
-                const std::string where = t.field("colours") + "." + std::to_string(i);
-                if (!cs[i].is_array() || cs[i].size() < 3 || cs[i].size() > 4)
-                    throw InputError("field '" + where + "' must be an array of 3 or 4 numbers");
-                std::vector<double> c;
-                for (size_t k = 0; k < cs[i].size(); ++k)
-                    c.push_back(JsonReader::checked_number(cs[i][k], where + "." + std::to_string(k), -kHuge, kHuge));
-                colours.push_back(c);
-            }
-        }
-        const nlohmann::json* uvs = textured ? &t.array("uvs", 3, 3) : nullptr;
-        for (size_t i = 0; i < 3; ++i) {
-            const std::string where = t.field("positions") + "." + std::to_string(i);
-            const size_t max_len = pixels ? 3 : 4;
-            if (!positions[i].is_array() || positions[i].size() < 2 || positions[i].size() > max_len)
-                throw InputError("field '" + where + "' must be an array of 2 to " +
-                                 std::to_string(max_len) + " numbers");
-            std::vector<double> p;
-            for (size_t k = 0; k < positions[i].size(); ++k) {
-                const bool is_depth = pixels && k == 2;
-                p.push_back(JsonReader::checked_number(positions[i][k], where + "." + std::to_string(k),
-                                                       is_depth ? 0.0 : -kHuge, is_depth ? 1.0 : kHuge));
-            }
-            if (!pixels && p.size() == 4 && p[3] == 0.0)
-                throw InputError("field '" + where + ".3' (w) must not be 0");
-            draw.indices.push_back(uint32_t(draw.vertices.vertex_count()));
-            draw.vertices.data.push_back(pixels ? pixel_to_clip(p, size) : clip_position(p));
-            draw.vertices.data.push_back(to_vec4(colours[i]));
-            if (uvs) {
-                const std::string uv_where = t.field("uvs") + "." + std::to_string(i);
-                const auto& uv = (*uvs)[i];
-                if (!uv.is_array() || uv.size() != 2)
-                    throw InputError("field '" + uv_where + "' must be an array of 2 numbers");
-                draw.vertices.data.push_back(glm::vec4(
-                    float(JsonReader::checked_number(uv[0], uv_where + ".0", -kHuge, kHuge)),
-                    float(JsonReader::checked_number(uv[1], uv_where + ".1", -kHuge, kHuge)), 0.0f, 1.0f));
-            }
-        }
-        t.finish();
-    }
+    read_triangle_list(scene, size, TriangleListFormat{pixels, textured, false}, draw);
     pass.draws.push_back(std::move(draw));
     Frame frame;
     frame.passes.push_back(std::move(pass));

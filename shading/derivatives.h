@@ -27,6 +27,8 @@ inline constexpr simd::IntV kColumnTop = ST_QUAD_LANES(2, 3, 2, 3), kColumnBotto
 
 ST_INLINE Float dFdx(Float v) { return shuffle(v, detail::kRowRight) - shuffle(v, detail::kRowLeft); }
 ST_INLINE Float dFdy(Float v) { return shuffle(v, detail::kColumnTop) - shuffle(v, detail::kColumnBottom); }
+// fwidth(p) = abs(dFdx(p)) + abs(dFdy(p)) (Mesa's builtin_functions.cpp).
+ST_INLINE Float fwidth(Float v) { return simd::abs(dFdx(v)) + simd::abs(dFdy(v)); }
 ST_INLINE Vec2 dFdx(const Vec2& v) { return {dFdx(v.x), dFdx(v.y)}; }
 ST_INLINE Vec2 dFdy(const Vec2& v) { return {dFdy(v.x), dFdy(v.y)}; }
 ST_INLINE Vec4 dFdx(const Vec4& v) { return {dFdx(v.x), dFdx(v.y), dFdx(v.z), dFdx(v.w)}; }

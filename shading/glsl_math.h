@@ -120,6 +120,8 @@ ST_INLINE Float inversesqrt(Float x) { return Float(1.0f) / simd::sqrt(x); }
 
 ST_INLINE float abs(float x) { return std::fabs(x); }
 ST_INLINE Float abs(Float x) { return simd::abs(x); }
+ST_INLINE float floor(float x) { return std::floor(x); }   // lp_build_floor: roundps, exact
+ST_INLINE Float floor(Float x) { return simd::floor(x); }
 ST_INLINE float max(float a, float b) { return scalar::max(a, b); }
 ST_INLINE Float max(Float a, Float b) { return simd::max(a, b); }
 ST_INLINE float min(float a, float b) { return scalar::min(a, b); }

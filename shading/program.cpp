@@ -23,6 +23,15 @@ float Bindings::get_float(const std::string& name) const {
     return find(uniforms, name, UniformType::Float).value[0];
 }
 
+int Bindings::get_int(const std::string& name) const {
+    return int(find(uniforms, name, UniformType::Int).value[0]);
+}
+
+glm::vec2 Bindings::get_vec2(const std::string& name) const {
+    const auto& v = find(uniforms, name, UniformType::Vec2).value;
+    return glm::vec2(v[0], v[1]);
+}
+
 glm::vec3 Bindings::get_vec3(const std::string& name) const {
     const auto& v = find(uniforms, name, UniformType::Vec3).value;
     return glm::vec3(v[0], v[1], v[2]);

@@ -16,10 +16,12 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "frame/frame.h"
+#include "shading/control_flow.h"
 #include "simd/lane_vec.h"
 
 namespace st {
@@ -43,6 +45,8 @@ struct Bindings {
     // Throws std::runtime_error naming the uniform when it is absent or of
     // another type, so a scene that forgets one fails loudly.
     float get_float(const std::string& name) const;
+    int get_int(const std::string& name) const;
+    glm::vec2 get_vec2(const std::string& name) const;
     glm::vec3 get_vec3(const std::string& name) const;
     glm::vec4 get_vec4(const std::string& name) const;
     glm::mat4 get_mat4(const std::string& name) const;
@@ -98,16 +102,19 @@ public:
     virtual uint32_t inputs_read() const { return ~0u; }
 };
 
-// What a twin's main() reads: the inputs of every lane at once.
+// What a twin's main() reads: the inputs of every lane at once, and the
+// execution state its control flow runs under (shading/control_flow.h).
 class Fragment {
 public:
-    explicit Fragment(const FragmentLanes& lanes) : lanes_(lanes) {}
+    Fragment(const FragmentLanes& lanes, Exec& exec) : lanes_(lanes), exec_(exec) {}
     const Vec4& varying(int slot) const { return lanes_.varyings[size_t(slot)]; }
     const Vec4& frag_coord() const { return lanes_.frag_coord; }
     bool front_facing() const { return lanes_.front_facing; }
+    Exec& exec() const { return exec_; }
 
 private:
     const FragmentLanes& lanes_;
+    Exec& exec_;
 };
 
 // Adapter: Derived implements `Vec4 main(const Fragment&) const`, the twin
@@ -116,8 +123,9 @@ template <class Derived>
 class FragmentProgram : public FragmentTwin {
 public:
     void shade(const FragmentLanes& in, FragmentResult& out) const override {
-        out.discarded = Mask(false);
-        out.colour = static_cast<const Derived*>(this)->main(Fragment(in));
+        Exec exec;  // one invocation: fresh masks and loop budget
+        out.colour = static_cast<const Derived*>(this)->main(Fragment(in, exec));
+        out.discarded = exec.discarded();
     }
 };
 

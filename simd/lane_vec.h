@@ -61,11 +61,16 @@ ST_LANE_VEC_OPS(Vec4, ST_VEC4_EACH)
 #undef ST_VEC3_EACH
 #undef ST_VEC4_EACH
 
-// vecN * float and float * vecN: each component times the scalar.
+// vecN * float and float * vecN: each component times the scalar; vecN +
+// float adds it to each.
+ST_INLINE Vec2 operator*(const Vec2& a, Float s) { return {a.x * s, a.y * s}; }
+ST_INLINE Vec2 operator+(const Vec2& a, Float s) { return {a.x + s, a.y + s}; }
+ST_INLINE Vec2 operator-(const Vec2& a, Float s) { return {a.x - s, a.y - s}; }
 ST_INLINE Vec3 operator*(const Vec3& a, Float s) { return {a.x * s, a.y * s, a.z * s}; }
 ST_INLINE Vec3 operator*(Float s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
 ST_INLINE Vec4 operator*(const Vec4& a, Float s) { return {a.x * s, a.y * s, a.z * s, a.w * s}; }
 
+ST_INLINE Vec2 select(Mask m, const Vec2& a, const Vec2& b) { return {select(m, a.x, b.x), select(m, a.y, b.y)}; }
 ST_INLINE Vec3 select(Mask m, const Vec3& a, const Vec3& b) {
     return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z)};
 }

@@ -1,0 +1,81 @@
+// conformance.h: twins of the conformance programs (glsl/conformance/*.frag),
+// one class per GLSL file, each .cpp named after its GLSL file. Their vertex
+// stage is the textured one (kernels/triangles/textured.h): varying 0 is the
+// colour, varying 1 the uv.
+#pragma once
+
+#include <glm/vec2.hpp>
+
+#include "shading/program.h"
+
+namespace st {
+
+class Sampler2D;
+
+class LoopExitFragment final : public FragmentProgram<LoopExitFragment> {  // loop_exit.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    const Sampler2D* tex_ = nullptr;
+    int steps_ = 0;
+    glm::vec2 dir_{0.0f};
+    float threshold_ = 0.0f;
+};
+
+class BranchTextureFragment final : public FragmentProgram<BranchTextureFragment> {  // branch_texture.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    const Sampler2D* tex_a_ = nullptr;
+    const Sampler2D* tex_b_ = nullptr;
+    float split_ = 0.0f;
+};
+
+class DerivativesFragment final : public FragmentProgram<DerivativesFragment> {  // derivatives.frag
+public:
+    void bind(const Bindings& b) override { scale_ = b.get_float("scale"); }
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    float scale_ = 0.0f;
+};
+
+class DiscardFragment final : public FragmentProgram<DiscardFragment> {  // discard.frag
+public:
+    void bind(const Bindings& b) override { steps_ = b.get_int("steps"); }
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    int steps_ = 0;
+};
+
+class NonFiniteFragment final : public FragmentProgram<NonFiniteFragment> {  // non_finite.frag
+public:
+    void bind(const Bindings& b) override { zero_ = b.get_float("zero"); }
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    float zero_ = 0.0f;
+};
+
+class LoopBudgetFragment final : public FragmentProgram<LoopBudgetFragment> {  // loop_budget.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override { return 0; }
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    int long_steps_ = 0, short_steps_ = 0;
+    glm::vec2 slow_a_{0.0f}, slow_b_{0.0f};
+};
+
+}  // namespace st

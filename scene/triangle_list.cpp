@@ -1,0 +1,87 @@
+// triangle_list.cpp: see triangle_list.h.
+#include "scene/triangle_list.h"
+
+#include "scene/input_error.h"
+
+namespace st {
+
+namespace {
+
+constexpr double kHuge = 1e30;          // coordinates beyond this are a typo
+constexpr size_t kMaxTriangles = 1 << 20;
+
+// Pixel positions map to clip space with w = 1: x_clip = x * (2/W) - 1. For
+// power-of-two sizes every step is exact, so a vertex given at 12.5 lands
+// on window x = 12.5 to the bit on both backends.
+glm::vec4 pixel_to_clip(const std::vector<double>& p, SceneSize size) {
+    const float x = float(p[0]) * (2.0f / float(size.width)) - 1.0f;
+    const float y = float(p[1]) * (2.0f / float(size.height)) - 1.0f;
+    const float depth = p.size() > 2 ? float(p[2]) : 0.5f;
+    return glm::vec4(x, y, depth * 2.0f - 1.0f, 1.0f);
+}
+
+glm::vec4 clip_position(const std::vector<double>& p) {
+    return glm::vec4(float(p[0]), float(p[1]), p.size() > 2 ? float(p[2]) : 0.0f,
+                     p.size() > 3 ? float(p[3]) : 1.0f);
+}
+
+glm::vec4 to_vec4(const std::vector<double>& v) {
+    return glm::vec4(float(v[0]), float(v[1]), float(v[2]), v.size() > 3 ? float(v[3]) : 1.0f);
+}
+
+}  // namespace
+
+void read_triangle_list(JsonReader& scene, SceneSize size, TriangleListFormat format, DrawCall& draw) {
+    for (JsonReader& t : scene.objects("triangles", 1, kMaxTriangles)) {
+        const auto& positions = t.array("positions", 3, 3);
+        std::vector<std::vector<double>> colours;
+        if (format.colour_optional && !t.has("colour") && !t.has("colours")) {
+            colours.assign(3, {1.0, 1.0, 1.0, 1.0});
+        } else if (t.has("colour")) {
+            const auto c = t.numbers("colour", 3, 4, -kHuge, kHuge);
+            colours.assign(3, c);
+        } else {
+            const auto& cs = t.array("colours", 3, 3);
+            for (size_t i = 0; i < 3; ++i) {
+                const std::string where = t.field("colours") + "." + std::to_string(i);
+                if (!cs[i].is_array() || cs[i].size() < 3 || cs[i].size() > 4)
+                    throw InputError("field '" + where + "' must be an array of 3 or 4 numbers");
+                std::vector<double> c;
+                for (size_t k = 0; k < cs[i].size(); ++k)
+                    c.push_back(JsonReader::checked_number(cs[i][k], where + "." + std::to_string(k), -kHuge, kHuge));
+                colours.push_back(c);
+            }
+        }
+        const nlohmann::json* uvs = format.uvs ? &t.array("uvs", 3, 3) : nullptr;
+        for (size_t i = 0; i < 3; ++i) {
+            const std::string where = t.field("positions") + "." + std::to_string(i);
+            const size_t max_len = format.pixels ? 3 : 4;
+            if (!positions[i].is_array() || positions[i].size() < 2 || positions[i].size() > max_len)
+                throw InputError("field '" + where + "' must be an array of 2 to " +
+                                 std::to_string(max_len) + " numbers");
+            std::vector<double> p;
+            for (size_t k = 0; k < positions[i].size(); ++k) {
+                const bool is_depth = format.pixels && k == 2;
+                p.push_back(JsonReader::checked_number(positions[i][k], where + "." + std::to_string(k),
+                                                       is_depth ? 0.0 : -kHuge, is_depth ? 1.0 : kHuge));
+            }
+            if (!format.pixels && p.size() == 4 && p[3] == 0.0)
+                throw InputError("field '" + where + ".3' (w) must not be 0");
+            draw.indices.push_back(uint32_t(draw.vertices.vertex_count()));
+            draw.vertices.data.push_back(format.pixels ? pixel_to_clip(p, size) : clip_position(p));
+            draw.vertices.data.push_back(to_vec4(colours[i]));
+            if (uvs) {
+                const std::string uv_where = t.field("uvs") + "." + std::to_string(i);
+                const auto& uv = (*uvs)[i];
+                if (!uv.is_array() || uv.size() != 2)
+                    throw InputError("field '" + uv_where + "' must be an array of 2 numbers");
+                draw.vertices.data.push_back(glm::vec4(
+                    float(JsonReader::checked_number(uv[0], uv_where + ".0", -kHuge, kHuge)),
+                    float(JsonReader::checked_number(uv[1], uv_where + ".1", -kHuge, kHuge)), 0.0f, 1.0f));
+            }
+        }
+        t.finish();
+    }
+}
+
+}  // namespace st

@@ -1,0 +1,21 @@
+// triangle_list.h: the "triangles" array shared by the triangles and
+// conformance kinds: positions in clip space or pixels, per-vertex colours
+// and, for textured programs, uvs. Appends to a draw whose vertex program
+// takes position, colour[, uv] (glsl/triangles/interp.vert, textured.vert).
+#pragma once
+
+#include "frame/frame.h"
+#include "scene/json_reader.h"
+#include "scene/scene_kinds.h"
+
+namespace st {
+
+struct TriangleListFormat {
+    bool pixels = false;      // positions in window pixels, else clip space
+    bool uvs = false;         // each triangle has "uvs"
+    bool colour_optional = false;  // no colour means white
+};
+
+void read_triangle_list(JsonReader& scene, SceneSize size, TriangleListFormat format, DrawCall& draw);
+
+}  // namespace st
