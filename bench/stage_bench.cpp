@@ -127,7 +127,7 @@ BENCHMARK_CAPTURE(BM_Blend, src_alpha_one_minus_src_alpha, BlendMode::SrcAlphaOn
 Texture noise_texture(TextureFormat format, TextureFilter filter) {
     Texture t;
     t.format = format;
-    t.filter = filter;
+    t.set_filter(filter);
     t.width = t.height = 256;
     std::mt19937 rng(1);
     for (int i = 0; i < 256 * 256 * 4; ++i) {

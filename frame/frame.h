@@ -36,20 +36,41 @@ struct Uniform {
     std::array<float, 16> value{};  // Mat4 column-major, as glUniformMatrix4fv
 };
 
-enum class TextureFormat { RGBA8, RGBA32F };
-enum class TextureFilter { Nearest, Linear };
-enum class TextureWrap { Repeat, ClampToEdge };
+// Storage formats. Texels are given to both backends as RGBA8 bytes or as
+// RGBA floats whatever the format; R32F keeps red, RGBA16F stores halves,
+// and both backends convert the same way (texture/texel_formats.h).
+enum class TextureFormat { RGBA8, R32F, RGBA16F, RGBA32F };
+enum class TextureFilter { Nearest, Linear };   // filter within a level
+enum class MipFilter { None, Nearest, Linear }; // filter between levels
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
 
-// A 2D texture. Texels are stored as floats whatever the format; for RGBA8
-// they hold k/255 exactly as uploaded, so both backends see the same bytes.
+// One mip level below the base: max(1, width >> L) x max(1, height >> L).
+struct TextureLevel {
+    int width = 0, height = 0;
+    std::vector<uint8_t> texels8;   // RGBA8
+    std::vector<float> texels32;    // the float formats, RGBA
+};
+
+// A 2D texture. Level 0 is width x height with texels8 (RGBA8: k/255
+// exactly as uploaded) or texels32 (RGBA floats); `mips` holds levels 1..N,
+// generated on the host (texture/mip_generation.h) and uploaded level by
+// level, so neither backend depends on glGenerateMipmap.
 struct Texture {
     std::string sampler;  // GLSL sampler uniform name
     TextureFormat format = TextureFormat::RGBA32F;
-    TextureFilter filter = TextureFilter::Linear;
-    TextureWrap wrap = TextureWrap::Repeat;
+    TextureFilter mag_filter = TextureFilter::Linear;
+    TextureFilter min_filter = TextureFilter::Linear;
+    MipFilter mip_filter = MipFilter::None;
+    TextureWrap wrap_s = TextureWrap::Repeat, wrap_t = TextureWrap::Repeat;
     int width = 0, height = 0;
     std::vector<uint8_t> texels8;   // RGBA8: width*height*4, row 0 = t near 0
-    std::vector<float> texels32;    // RGBA32F: width*height*4
+    std::vector<float> texels32;    // float formats: width*height*4
+    std::vector<TextureLevel> mips;
+
+    int level_count() const { return 1 + int(mips.size()); }
+    // One filter for both (the textures of the thin-slab and triangle scenes).
+    void set_filter(TextureFilter f) { mag_filter = min_filter = f; }
+    void set_wrap(TextureWrap w) { wrap_s = wrap_t = w; }
 };
 
 enum class BlendMode {

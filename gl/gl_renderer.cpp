@@ -91,8 +91,53 @@ GLuint link(const std::string& vert_path, const std::string& frag_path) {
     return program;
 }
 
-GLint gl_wrap(TextureWrap w) { return w == TextureWrap::Repeat ? GL_REPEAT : GL_CLAMP_TO_EDGE; }
-GLint gl_filter(TextureFilter f) { return f == TextureFilter::Linear ? GL_LINEAR : GL_NEAREST; }
+GLint gl_wrap(TextureWrap w) {
+    switch (w) {
+        case TextureWrap::Repeat: return GL_REPEAT;
+        case TextureWrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
+        case TextureWrap::MirroredRepeat: return GL_MIRRORED_REPEAT;
+    }
+    return GL_REPEAT;
+}
+GLint gl_mag_filter(TextureFilter f) { return f == TextureFilter::Linear ? GL_LINEAR : GL_NEAREST; }
+GLint gl_min_filter(TextureFilter f, MipFilter mip) {
+    const bool linear = f == TextureFilter::Linear;
+    switch (mip) {
+        case MipFilter::None: return linear ? GL_LINEAR : GL_NEAREST;
+        case MipFilter::Nearest: return linear ? GL_LINEAR_MIPMAP_NEAREST : GL_NEAREST_MIPMAP_NEAREST;
+        case MipFilter::Linear: return linear ? GL_LINEAR_MIPMAP_LINEAR : GL_NEAREST_MIPMAP_LINEAR;
+    }
+    return GL_NEAREST;
+}
+GLenum gl_internal_format(TextureFormat f) {
+    switch (f) {
+        case TextureFormat::RGBA8: return GL_RGBA8;
+        case TextureFormat::R32F: return GL_R32F;
+        case TextureFormat::RGBA16F: return GL_RGBA16F;
+        case TextureFormat::RGBA32F: return GL_RGBA32F;
+    }
+    return GL_RGBA32F;
+}
+
+// Level by level, from the host's texels: RGBA8 as bytes, the float formats
+// as RGBA floats that GL converts to the storage format (texel_formats.h).
+void upload_texture(const Texture& tex) {
+    glTexStorage2D(GL_TEXTURE_2D, tex.level_count(), gl_internal_format(tex.format), tex.width, tex.height);
+    for (int level = 0; level < tex.level_count(); ++level) {
+        const TextureLevel* l = level ? &tex.mips[size_t(level - 1)] : nullptr;
+        const int w = l ? l->width : tex.width, h = l ? l->height : tex.height;
+        if (tex.format == TextureFormat::RGBA8)
+            glTexSubImage2D(GL_TEXTURE_2D, level, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE,
+                            l ? l->texels8.data() : tex.texels8.data());
+        else
+            glTexSubImage2D(GL_TEXTURE_2D, level, 0, 0, w, h, GL_RGBA, GL_FLOAT,
+                            l ? l->texels32.data() : tex.texels32.data());
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, gl_min_filter(tex.min_filter, tex.mip_filter));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, gl_mag_filter(tex.mag_filter));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap_s));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap_t));
+}
 
 void set_uniform(GLuint program, const Uniform& u) {
     const GLint loc = glGetUniformLocation(program, u.name.c_str());
@@ -222,19 +267,7 @@ void GlRenderer::prepare(const Frame& frame) {
                 glGenTextures(1, &name);
                 glBindTexture(GL_TEXTURE_2D, name);
                 glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-                if (tex.format == TextureFormat::RGBA8) {
-                    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, tex.width, tex.height);
-                    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, tex.width, tex.height, GL_RGBA,
-                                    GL_UNSIGNED_BYTE, tex.texels8.data());
-                } else {
-                    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, tex.width, tex.height);
-                    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, tex.width, tex.height, GL_RGBA,
-                                    GL_FLOAT, tex.texels32.data());
-                }
-                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, gl_filter(tex.filter));
-                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, gl_filter(tex.filter));
-                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap));
-                glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap));
+                upload_texture(tex);
                 const GLint loc = glGetUniformLocation(d.program, tex.sampler.c_str());
                 if (loc >= 0) glUniform1i(loc, GLint(unit));
                 d.textures.push_back(name);

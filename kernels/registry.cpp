@@ -46,6 +46,8 @@ const std::map<std::string, Factory<FragmentTwin>>& fragment_twins() {
         {"discard", [] { return std::make_unique<DiscardFragment>(); }},
         {"non_finite", [] { return std::make_unique<NonFiniteFragment>(); }},
         {"loop_budget", [] { return std::make_unique<LoopBudgetFragment>(); }},
+        {"sample_implicit", [] { return std::make_unique<SampleImplicitFragment>(); }},
+        {"sample_lod", [] { return std::make_unique<SampleLodFragment>(); }},
     };
     return twins;
 }

@@ -1,7 +1,10 @@
 // texture_patterns.cpp: see texture_patterns.h.
 #include "scene/texture_patterns.h"
 
+#include <algorithm>
 #include <cstdint>
+
+#include "texture/mip_generation.h"
 
 namespace st {
 
@@ -17,35 +20,82 @@ uint32_t hash32(uint32_t x) {
     return x;
 }
 
+// Fills one level with the pattern.
+void fill(int width, int height, TextureFormat format, bool checker, uint32_t seed, std::vector<uint8_t>& texels8,
+          std::vector<float>& texels32) {
+    const size_t n = size_t(width) * size_t(height) * 4;
+    if (format == TextureFormat::RGBA8) texels8.resize(n);
+    else texels32.resize(n);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < 4; ++c) {
+                const size_t i = (size_t(y) * size_t(width) + size_t(x)) * 4 + size_t(c);
+                uint32_t h = hash32(seed * 0x9e3779b9u ^ hash32(uint32_t(i)));
+                if (checker) h = ((x / 4 + y / 4) % 2) ? 0xe0000000u + (uint32_t(c) << 26) : 0x20000000u;
+                if (c == 3 && !checker) h |= 0x80000000u;  // alpha in [0.5, 1)
+                if (format == TextureFormat::RGBA8) texels8[i] = uint8_t(h >> 24);
+                else texels32[i] = float(h >> 8) * (1.0f / 16777216.0f);  // 24 bits: exact
+            }
+}
+
+TextureWrap wrap_named(const std::string& name) {
+    if (name == "clamp") return TextureWrap::ClampToEdge;
+    if (name == "mirrored_repeat") return TextureWrap::MirroredRepeat;
+    return TextureWrap::Repeat;
+}
+
+TextureFilter filter_named(const std::string& name) {
+    return name.rfind("linear", 0) == 0 ? TextureFilter::Linear : TextureFilter::Nearest;
+}
+
+MipFilter mip_filter_named(const std::string& name) {
+    const auto at = name.find("_mipmap_");
+    if (at == std::string::npos) return MipFilter::None;
+    return name.substr(at + 8) == "linear" ? MipFilter::Linear : MipFilter::Nearest;
+}
+
 }  // namespace
 
 Texture read_pattern_texture(JsonReader& r, const std::string& sampler) {
     Texture t;
     t.sampler = sampler;
-    t.format = r.choice_or("format", "rgba32f", {"rgba8", "rgba32f"}) == "rgba8" ? TextureFormat::RGBA8
-                                                                                  : TextureFormat::RGBA32F;
-    t.filter = r.choice_or("filter", "linear", {"linear", "nearest"}) == "linear" ? TextureFilter::Linear
-                                                                                  : TextureFilter::Nearest;
-    t.wrap = r.choice_or("wrap", "repeat", {"repeat", "clamp"}) == "repeat" ? TextureWrap::Repeat
-                                                                            : TextureWrap::ClampToEdge;
+    const std::string format = r.choice_or("format", "rgba32f", {"rgba8", "r32f", "rgba16f", "rgba32f"});
+    t.format = format == "rgba8"     ? TextureFormat::RGBA8
+               : format == "r32f"    ? TextureFormat::R32F
+               : format == "rgba16f" ? TextureFormat::RGBA16F
+                                     : TextureFormat::RGBA32F;
+    const std::vector<std::string> wraps = {"repeat", "clamp", "mirrored_repeat"};
+    const std::string wrap = r.choice_or("wrap", "repeat", wraps);
+    t.wrap_s = wrap_named(r.choice_or("wrap_s", wrap, wraps));
+    t.wrap_t = wrap_named(r.choice_or("wrap_t", wrap, wraps));
+    const std::string filter = r.choice_or("filter", "linear", {"linear", "nearest"});
+    t.mag_filter = filter_named(r.choice_or("mag_filter", filter, {"linear", "nearest"}));
+    const std::string min = r.choice_or("min_filter", filter,
+                                        {"nearest", "linear", "nearest_mipmap_nearest", "linear_mipmap_nearest",
+                                         "nearest_mipmap_linear", "linear_mipmap_linear"});
+    t.min_filter = filter_named(min);
+    t.mip_filter = mip_filter_named(min);
     t.width = r.integer("width", 1, 4096);
     t.height = r.integer("height", 1, 4096);
     const bool checker = r.choice_or("pattern", "noise", {"checker", "noise"}) == "checker";
     const auto seed = uint32_t(r.integer_or("seed", 1, 0, 1 << 30));
+    fill(t.width, t.height, t.format, checker, seed, t.texels8, t.texels32);
 
-    const size_t n = size_t(t.width) * t.height * 4;
-    if (t.format == TextureFormat::RGBA8) t.texels8.resize(n);
-    else t.texels32.resize(n);
-    for (int y = 0; y < t.height; ++y)
-        for (int x = 0; x < t.width; ++x)
-            for (int c = 0; c < 4; ++c) {
-                const size_t i = (size_t(y) * t.width + x) * 4 + c;
-                uint32_t h = hash32(seed * 0x9e3779b9u ^ hash32(uint32_t(i)));
-                if (checker) h = ((x / 4 + y / 4) % 2) ? 0xe0000000u + (uint32_t(c) << 26) : 0x20000000u;
-                if (c == 3 && !checker) h |= 0x80000000u;  // alpha in [0.5, 1)
-                if (t.format == TextureFormat::RGBA8) t.texels8[i] = uint8_t(h >> 24);
-                else t.texels32[i] = float(h >> 8) * (1.0f / 16777216.0f);  // 24 bits: exact
-            }
+    // Mip levels: none, a box filter of level 0 ("box"), or each level its
+    // own pattern ("distinct", seeded per level), which shows in every texel
+    // which level a sample took.
+    const std::string mipmaps = r.choice_or("mipmaps", "none", {"none", "box", "distinct"});
+    const int full = full_chain_levels(t.width, t.height);
+    const int levels = mipmaps == "none" ? 1 : r.integer_or("levels", full, 1, full);
+    if (mipmaps == "box") generate_box_mips(t, levels);
+    if (mipmaps == "distinct")
+        for (int level = 1; level < levels; ++level) {
+            TextureLevel l;
+            l.width = std::max(1, t.width >> level);
+            l.height = std::max(1, t.height >> level);
+            fill(l.width, l.height, t.format, checker, seed + uint32_t(level) * 7919u, l.texels8, l.texels32);
+            t.mips.push_back(std::move(l));
+        }
     r.finish();
     return t;
 }

@@ -15,8 +15,8 @@ Frame build_thin_slab_sweep_scene(JsonReader&, SceneSize size) {
     Texture inputs;
     inputs.sampler = "inputs";
     inputs.format = TextureFormat::RGBA32F;
-    inputs.filter = TextureFilter::Nearest;
-    inputs.wrap = TextureWrap::ClampToEdge;
+    inputs.set_filter(TextureFilter::Nearest);
+    inputs.set_wrap(TextureWrap::ClampToEdge);
     inputs.width = size.width;
     inputs.height = size.height;
     for (const SweepRow& row : rows)  // texture row 0 = window row 0 (bottom)

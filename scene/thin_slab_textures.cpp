@@ -15,8 +15,8 @@ Texture rgba8(const std::string& sampler, int w, int h) {
     Texture t;
     t.sampler = sampler;
     t.format = TextureFormat::RGBA8;
-    t.filter = TextureFilter::Linear;
-    t.wrap = TextureWrap::ClampToEdge;
+    t.set_filter(TextureFilter::Linear);
+    t.set_wrap(TextureWrap::ClampToEdge);
     t.width = w;
     t.height = h;
     t.texels8.resize(size_t(w) * h * 4);

@@ -1,19 +1,23 @@
-// sampler2d.cpp: texture(), mirroring llvmpipe's two filtering paths, on
-// all lanes at once (the scalar calls are one lane of the same code).
+// sampler2d.cpp: texture() and textureLod(), mirroring llvmpipe's two
+// filtering paths, on all lanes at once (the scalar calls are one lane of
+// the same code). Section numbers are docs/llvmpipe/mipmaps-cubes-formats.md.
 //
-// RGBA32F (and nearest filtering of any format) goes through the float SoA
-// sampler (gallivm lp_bld_sample_soa.c); RGBA8 with linear filtering goes
-// through the 8-bit fixed-point AoS sampler (lp_bld_sample_aos.c), which
-// llvmpipe picks for formats that fit 8-bit unorm with simple wrap modes.
-// Texture sizes decide between the power-of-two and general repeat code.
-// Integer lanes wrap modulo 2^32 and float-to-int conversions give
-// INT32_MIN for NaN or out-of-range values, as on x86 (simd/lanes.h), so no
-// coordinate is undefined behaviour; every texel read is bounds-checked or
-// in range by construction.
+// RGBA8 with REPEAT or CLAMP_TO_EDGE goes through the 8-bit fixed-point AoS
+// sampler (gallivm lp_bld_sample_aos.c), everything else through the float
+// SoA sampler (lp_bld_sample_soa.c) (§1.2). The level comes from the LOD
+// selector (§2.4, §2.6); with a LINEAR mip filter two levels are filtered
+// and blended, in float (SoA) or in 8 bits (AoS) (§2.8). Wraps follow §3,
+// with the power-of-two choice made once from level 0. Integer lanes wrap
+// modulo 2^32 and float-to-int conversions give INT32_MIN for NaN or
+// out-of-range values, as on x86 (simd/lanes.h), so no coordinate is
+// undefined behaviour; every texel read is bounds-checked or in range by
+// construction.
 #include "texture/sampler2d.h"
 
 #include <algorithm>
 #include <cstring>
+
+#include "texture/texel_formats.h"
 
 namespace st {
 
@@ -23,11 +27,24 @@ using simd::fma;
 using simd::floor;
 using simd::iround;
 using simd::itrunc;
+using simd::IntV;
+using Level = Sampler2D::LevelLanes;
 
 bool is_pot(int n) { return (n & (n - 1)) == 0; }
 
+// x86 maxps: a > b ? a : b, so a NaN in either operand gives b.
+ST_INLINE Float maxps(Float a, Float b) { return select(a > b, a, b); }
+
 // std::clamp(x, lo, hi) per lane: a NaN stays NaN.
-Float clamp_like_std(Float x, Float lo, Float hi) { return select(x < lo, lo, select(hi < x, hi, x)); }
+ST_INLINE Float clamp_like_std(Float x, Float lo, Float hi) { return select(x < lo, lo, select(hi < x, hi, x)); }
+
+// MIRRORED_REPEAT folds s into [0, 1] once, at the sample's centre
+// (lp_build_coord_mirror, posOnly): |2 (s/2 - rne(s/2))|, NaN -> 0.
+ST_INLINE Float mirror(Float s) {
+    const Float c = s * Float(0.5f);
+    const Float f = c - simd::to_float(iround(c));
+    return maxps(simd::abs(f + f), Float(0.0f));
+}
 
 // Float texel coordinates for linear filtering along one axis: the lower
 // texel i0, the upper i1 and the weight of i1 (wrap_linear in
@@ -37,9 +54,9 @@ struct LinearTaps {
     Float weight;
 };
 
-ST_INLINE LinearTaps linear_taps_float(Float s, int size, TextureWrap wrap) {
-    const Float size_f = Float(float(size));
+ST_INLINE LinearTaps linear_taps_float(Float s, Int size, Float size_f, bool pot, TextureWrap wrap) {
     LinearTaps t;
+    const Int last = size - Int(1);
     if (wrap == TextureWrap::ClampToEdge) {
         Float u = s * size_f;
         u = select(simd::isnan(u), size_f, select(size_f < u, size_f, u));  // min(u, size), NaN -> size
@@ -48,53 +65,60 @@ ST_INLINE LinearTaps linear_taps_float(Float s, int size, TextureWrap wrap) {
         const Float fl = floor(u);
         t.weight = u - fl;
         t.i0 = itrunc(fl);
-        t.i1 = simd::min(t.i0 + Int(1), Int(size - 1));
-    } else if (is_pot(size)) {
+        t.i1 = simd::min(t.i0 + Int(1), last);
+    } else if (wrap == TextureWrap::MirroredRepeat) {
+        const Float u = mirror(s) * size_f - Float(0.5f);
+        const Float fl = floor(u);
+        t.weight = u - fl;
+        t.i0 = simd::max(itrunc(fl), Int(0));
+        t.i1 = simd::min(itrunc(fl) + Int(1), last);
+    } else if (pot) {
         const Float u = s * size_f - Float(0.5f);
         const Float fl = floor(u);
         t.weight = u - fl;
-        t.i0 = itrunc(fl) & Int(size - 1);
-        t.i1 = (itrunc(fl) + Int(1)) & Int(size - 1);
+        t.i0 = itrunc(fl) & last;
+        t.i1 = (itrunc(fl) + Int(1)) & last;
     } else {
         // Normalised repeat is fract(); the -0.5 then needs a fix-up below 0.
         Float u = s - floor(s);
         u = u * size_f - Float(0.5f);
         const Float fl = floor(u);
         t.weight = u - fl;
-        t.i0 = select(u < Float(0.0f), Int(size - 1), itrunc(fl));
-        t.i1 = select(t.i0 != Int(size - 1), t.i0 + Int(1), Int(0));
+        t.i0 = select(u < Float(0.0f), last, itrunc(fl));
+        t.i1 = select(t.i0 != last, t.i0 + Int(1), Int(0));
     }
     return t;
 }
 
 // The same in 8.8 fixed point for the AoS path: the weight is an integer
-// in [0, 255] (wrap_linear_int and repeat_npot_linear_int).
+// in [0, 255] (wrap_linear_int and repeat_npot_linear_int, §3.2).
 struct LinearTaps8 {
     Int i0, i1, weight;
 };
 
-ST_INLINE LinearTaps8 linear_taps_fixed(Float s, int size, TextureWrap wrap) {
+ST_INLINE LinearTaps8 linear_taps_fixed(Float s, Int size, Float size_f, bool pot, TextureWrap wrap) {
     LinearTaps8 t;
-    if (wrap == TextureWrap::Repeat && !is_pot(size)) {
+    const Int last = size - Int(1);
+    if (wrap == TextureWrap::Repeat && !pot) {
         Float u = s - floor(s);
-        u = u * Float(float(size));
+        u = u * size_f;
         const Int fixed = iround(u * Float(256.0f)) - Int(128);
         t.weight = fixed & Int(255);
         t.i0 = fixed >> 8;
-        t.i0 = select(t.i0 < Int(0), Int(size - 1), t.i0);
-        t.i0 = simd::min(t.i0, Int(size - 1));
-        t.i1 = select(t.i0 != Int(size - 1), t.i0 + Int(1), Int(0));
+        t.i0 = select(t.i0 < Int(0), last, t.i0);
+        t.i0 = simd::min(t.i0, last);
+        t.i1 = select(t.i0 != last, t.i0 + Int(1), Int(0));
         return t;
     }
-    const Int fixed = iround(s * Float(float(size << 8))) - Int(128);
+    const Int fixed = iround(s * simd::to_float(size << 8)) - Int(128);
     t.weight = fixed & Int(255);
     const Int i0 = fixed >> 8;
     if (wrap == TextureWrap::Repeat) {
-        t.i0 = i0 & Int(size - 1);
-        t.i1 = (i0 + Int(1)) & Int(size - 1);
+        t.i0 = i0 & last;
+        t.i1 = (i0 + Int(1)) & last;
     } else {
-        t.i0 = simd::clamp(i0, Int(0), Int(size - 1));
-        t.i1 = simd::clamp(i0 + Int(1), Int(0), Int(size - 1));
+        t.i0 = simd::clamp(i0, Int(0), last);
+        t.i1 = simd::clamp(i0 + Int(1), Int(0), last);
     }
     return t;
 }
@@ -112,23 +136,38 @@ ST_INLINE Int lerp8_pairs(Int w, Int v0, Int v1) {
 // Float lerp: fma(t, v1 - v0, v0), as lp_build_mad fuses it.
 ST_INLINE Float lerp_float(Float t, Float v0, Float v1) { return fma(t, v1 - v0, v0); }
 
-ST_INLINE Int nearest_texel(Float s, int size, TextureWrap wrap) {
-    const Float size_f = Float(float(size));
+// The nearest texel along one axis. The SoA and AoS paths differ only for
+// CLAMP_TO_EDGE beyond 2^31 texels (the AoS floor converts to INT32_MIN).
+ST_INLINE Int nearest_texel(Float s, Int size, Float size_f, bool pot, TextureWrap wrap, bool aos) {
+    const Int last = size - Int(1);
     if (wrap == TextureWrap::ClampToEdge) {
-        // itrunc is enough: the clamp removes every negative.
         const Float u = s * size_f;
+        if (aos) return simd::clamp(itrunc(floor(u)), Int(0), last);
+        // itrunc is enough: the clamp removes every negative.
         const Int i = select(simd::isnan(u), Int(0), itrunc(clamp_like_std(u, Float(-1.0f), size_f)));
-        return simd::clamp(i, Int(0), Int(size - 1));
+        return simd::clamp(i, Int(0), last);
     }
-    if (is_pot(size)) return itrunc(floor(s * size_f)) & Int(size - 1);
-    // fract_safe keeps the fraction below 1.
+    if (wrap == TextureWrap::MirroredRepeat) return simd::min(itrunc(mirror(s) * size_f), last);
+    if (pot) return itrunc(floor(s * size_f)) & last;
+    // fract_safe keeps the fraction below 1: minps(fraction, 1 - ulp), so a
+    // NaN coordinate gives the last texel.
     const Float fraction = s - floor(s);
-    const Float f = select(Float(0x1.fffffep-1f) < fraction, Float(0x1.fffffep-1f), fraction);
+    const Float f = select(fraction < Float(0x1.fffffep-1f), fraction, Float(0x1.fffffep-1f));
     return itrunc(f * size_f);
 }
 
 // unorm8 to float: k * fl(1/255), one rounding (lp_bld_conv.c).
 ST_INLINE Float unorm8_to_float(Int k) { return simd::to_float(k) * Float(1.0f / 255.0f); }
+
+// The R and B bytes (rb) or G and A bytes (ga) of packed RGBA8 texels, one
+// per 16-bit half.
+ST_INLINE Int red_blue(Int t) { return t & Int(0x00ff00ff); }
+ST_INLINE Int green_alpha(Int t) { return (t >> 8) & Int(0x00ff00ff); }
+
+ST_INLINE Vec4 unpack_pairs(Int rb, Int ga) {
+    return Vec4(unorm8_to_float(rb & Int(0xff)), unorm8_to_float(ga & Int(0xff)), unorm8_to_float(rb >> 16),
+                unorm8_to_float(ga >> 16));
+}
 
 // When every lane's four taps lie within kLanes texels of a row and
 // kWindowRows rows (a magnified or unscaled texture, where neighbouring
@@ -141,10 +180,8 @@ ST_INLINE Float unorm8_to_float(Int k) { return simd::to_float(k) * Float(1.0f /
 // for a texture that is not mirrored on the screen), and is 8 texels by 2
 // rows for each row of taps. The four tables of a call (each group's two rows
 // under v.i0 and under v.i1) make two 32-entry permutes per tap row.
-using simd::IntV;
-
-bool fetch_window_groups(const std::vector<int32_t>& rgba8, int width, int height, const LinearTaps8& u,
-                         const LinearTaps8& v, Int& t00, Int& t10, Int& t01, Int& t11) {
+bool fetch_window_groups(const int32_t* rgba8, int width, int height, const LinearTaps8& u, const LinearTaps8& v,
+                         Int& t00, Int& t10, Int& t01, Int& t11) {
     const __m512i lane0_of_group = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
     auto group_base = [&](Int x) { return Int(IntV(_mm512_permutexvar_epi32(lane0_of_group, __m512i(x.v)))); };
     const Int u_base = group_base(u.i0), v0_base = group_base(v.i0), v1_base = group_base(v.i1);
@@ -157,8 +194,8 @@ bool fetch_window_groups(const std::vector<int32_t>& rgba8, int width, int heigh
     // Row r of group g's window under base row b: 8 texels from its u_base.
     auto row = [&](int g, int32_t b, int r) {
         const int32_t y = std::min(b + r, height - 1);  // a row past the edge is loaded but never picked
-        return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(
-            &rgba8[size_t(y) * size_t(width) + size_t(u_base[8 * g])]));
+        return _mm256_loadu_si256(
+            reinterpret_cast<const __m256i*>(&rgba8[size_t(y) * size_t(width) + size_t(u_base[8 * g])]));
     };
     auto table = [&](const Int& base, __m512i& lo, __m512i& hi) {
         // lo = row 0 of both groups, hi = row 1: entry r * 16 + g * 8 + x.
@@ -169,7 +206,9 @@ bool fetch_window_groups(const std::vector<int32_t>& rgba8, int width, int heigh
     table(v0_base, a_lo, a_hi);
     table(v1_base, b_lo, b_hi);
     const __m512i group8 = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
-    auto index = [&](Int y, Int x) { return _mm512_add_epi32(_mm512_add_epi32(__m512i((y << 4).v), group8), __m512i(x.v)); };
+    auto index = [&](Int y, Int x) {
+        return _mm512_add_epi32(_mm512_add_epi32(__m512i((y << 4).v), group8), __m512i(x.v));
+    };
     t00 = Int(IntV(_mm512_permutex2var_epi32(a_lo, index(y0, x0), a_hi)));
     t10 = Int(IntV(_mm512_permutex2var_epi32(a_lo, index(y0, x1), a_hi)));
     t01 = Int(IntV(_mm512_permutex2var_epi32(b_lo, index(y1, x0), b_hi)));
@@ -178,8 +217,8 @@ bool fetch_window_groups(const std::vector<int32_t>& rgba8, int width, int heigh
 }
 #endif
 
-bool fetch_window(const std::vector<int32_t>& rgba8, int width, const LinearTaps8& u, const LinearTaps8& v,
-                  Int& t00, Int& t10, Int& t01, Int& t11) {
+bool fetch_window(const int32_t* rgba8, int width, const LinearTaps8& u, const LinearTaps8& v, Int& t00, Int& t10,
+                  Int& t01, Int& t11) {
     constexpr int kWindowRows = 6;
     const int32_t u_lo = simd::reduce_min(simd::min(u.i0, u.i1)), u_hi = simd::reduce_max(simd::max(u.i0, u.i1));
     const int32_t v_lo = simd::reduce_min(simd::min(v.i0, v.i1)), v_hi = simd::reduce_max(simd::max(v.i0, v.i1));
@@ -199,49 +238,142 @@ bool fetch_window(const std::vector<int32_t>& rgba8, int width, const LinearTaps
     return true;
 }
 
+// Lane indices of the top-left, top-right and bottom-left lane of each
+// lane's quad: the lanes llvmpipe takes a quad's derivatives from (§2.2).
+#define ST_QUAD(q, a) 4 * q + a, 4 * q + a, 4 * q + a, 4 * q + a
+#if ST_LANES == 8
+#define ST_QUAD_LANES(a) {ST_QUAD(0, a), ST_QUAD(1, a)}
+#else
+#define ST_QUAD_LANES(a) {ST_QUAD(0, a), ST_QUAD(1, a), ST_QUAD(2, a), ST_QUAD(3, a)}
+#endif
+constexpr IntV kQuadTL = ST_QUAD_LANES(0), kQuadTR = ST_QUAD_LANES(1), kQuadBL = ST_QUAD_LANES(2);
+#undef ST_QUAD_LANES
+#undef ST_QUAD
+
+// Lane bits of 8-lane groups where some lane of the group is in m.
+ST_INLINE Mask any_in_group(Mask m) {
+    const unsigned b = bits(m);
+    unsigned out = 0;
+    for (int g = 0; g < kLanes / 8; ++g)
+        if (b >> (8 * g) & 0xffu) out |= 0xffu << (8 * g);
+    return Mask::from_bits(out);
+}
+
 glm::vec4 lane0(const Vec4& v) { return glm::vec4(v.x[0], v.y[0], v.z[0], v.w[0]); }
 
 }  // namespace
 
+// The levels one sample reads and how it weighs them (§2.6).
+struct Sampler2D::LevelChoice {
+    Int level0, level1;
+    Float fpart;  // weight of level1; 0 where only level0 counts
+    bool two_levels = false;
+};
+
 Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
+    last_level_ = int(texture.mips.size());
+    // A texture with one level has no mip filter (level_zero_only).
+    mip_filter_ = last_level_ == 0 ? MipFilter::None : texture.mip_filter;
+    pot_w_ = is_pot(texture.width);
+    pot_h_ = is_pot(texture.height);
+    auto simple_wrap = [](TextureWrap w) { return w == TextureWrap::Repeat || w == TextureWrap::ClampToEdge; };
+    aos_ = texture.format == TextureFormat::RGBA8 && simple_wrap(texture.wrap_s) && simple_wrap(texture.wrap_t);
+
+    size_t texels = 0;
+    for (int l = 0; l <= last_level_; ++l) {
+        const int w = l ? texture.mips[size_t(l - 1)].width : texture.width;
+        const int h = l ? texture.mips[size_t(l - 1)].height : texture.height;
+        level_width_.push_back(w);
+        level_height_.push_back(h);
+        level_base_.push_back(int32_t(texels));
+        texels += size_t(w) * size_t(h);
+    }
+    auto level_bytes = [&](int l) { return l ? texture.mips[size_t(l - 1)].texels8.data() : texture.texels8.data(); };
+    auto level_floats = [&](int l) {
+        return l ? texture.mips[size_t(l - 1)].texels32.data() : texture.texels32.data();
+    };
     if (texture.format == TextureFormat::RGBA8) {
-        rgba8_.assign(texture.texels8.size() / 4 + kLanes, 0);
-        std::memcpy(rgba8_.data(), texture.texels8.data(), texture.texels8.size());
+        rgba8_.assign(texels + kLanes, 0);
+        for (int l = 0; l <= last_level_; ++l)
+            std::memcpy(&rgba8_[size_t(level_base_[size_t(l)])], level_bytes(l),
+                        size_t(level_width_[size_t(l)]) * size_t(level_height_[size_t(l)]) * 4);
+    } else {
+        rgba32_.assign(texels * 4, 0.0f);
+        for (int l = 0; l <= last_level_; ++l) {
+            const float* in = level_floats(l);
+            float* out = &rgba32_[size_t(level_base_[size_t(l)]) * 4];
+            const size_t n = size_t(level_width_[size_t(l)]) * size_t(level_height_[size_t(l)]);
+            for (size_t i = 0; i < n; ++i) stored_texel(texture.format, in + 4 * i, out + 4 * i);
+        }
     }
 }
 
-Vec4 Sampler2D::fetch(Int x, Int y) const {
-    const Mask inside = !(x < Int(0)) && !(y < Int(0)) && x < Int(tex_->width) && y < Int(tex_->height);
-    const Int texel = y * Int(tex_->width) + x;
-    if (tex_->format == TextureFormat::RGBA8) {
-        const Int rgba = simd::gather(rgba8_.data(), texel, inside);
-        return Vec4(unorm8_to_float(rgba & Int(0xff)), unorm8_to_float((rgba >> 8) & Int(0xff)),
-                    unorm8_to_float((rgba >> 16) & Int(0xff)), unorm8_to_float((rgba >> 24) & Int(0xff)));
+Sampler2D::LevelLanes Sampler2D::level_lanes(Int level) const {
+    // level is in [0, last_level_] on every lane.
+    LevelLanes l;
+    if (last_level_ == 0) {
+        l.width = Int(tex_->width);
+        l.height = Int(tex_->height);
+        l.base = Int(0);
+    } else {
+        const Mask all(true);
+        l.width = simd::gather(level_width_.data(), level, all);
+        l.height = simd::gather(level_height_.data(), level, all);
+        l.base = simd::gather(level_base_.data(), level, all);
     }
-    const float* t = tex_->texels32.data();
-    const Int i = texel * Int(4);
+    l.width_f = simd::to_float(l.width);
+    l.height_f = simd::to_float(l.height);
+    return l;
+}
+
+Vec4 Sampler2D::texel(const LevelLanes& level, Int x, Int y) const {
+    // Taps are inside their level by construction (wrapped or clamped)
+    // except the npot REPEAT taps of a NaN coordinate, whose weight is NaN
+    // anyway: those read 0, never outside the texels.
+    const Mask inside = !(x < Int(0)) && !(y < Int(0)) && x < level.width && y < level.height;
+    const Int index = level.base + y * level.width + x;
+    if (tex_->format == TextureFormat::RGBA8) {
+        const Int rgba = simd::gather(rgba8_.data(), index, inside);
+        return unpack_pairs(red_blue(rgba), green_alpha(rgba));
+    }
+    const float* t = rgba32_.data();
+    const Int i = index * Int(4);
     return Vec4(simd::gather(t, i, inside), simd::gather(t + 1, i, inside), simd::gather(t + 2, i, inside),
                 simd::gather(t + 3, i, inside));
 }
 
-Vec4 Sampler2D::sample(const Vec2& st) const {
-    if (tex_->filter == TextureFilter::Nearest) return sample_nearest(st);
-    return tex_->format == TextureFormat::RGBA8 ? sample_linear_unorm8(st) : sample_linear_float(st);
+Vec4 Sampler2D::fetch(Int x, Int y, Int level) const {
+    const Mask level_ok = !(level < Int(0)) && !(Int(last_level_) < level);
+    const LevelLanes l = level_lanes(select(level_ok, level, Int(0)));
+    const Mask inside = level_ok && !(x < Int(0)) && !(y < Int(0)) && x < l.width && y < l.height;
+    const Int index = l.base + y * l.width + x;
+    if (tex_->format == TextureFormat::RGBA8) {
+        const Int rgba = simd::gather(rgba8_.data(), index, inside);
+        return unpack_pairs(red_blue(rgba), green_alpha(rgba));
+    }
+    const float* t = rgba32_.data();
+    const Int i = index * Int(4);
+    Vec4 r(simd::gather(t, i, inside), simd::gather(t + 1, i, inside), simd::gather(t + 2, i, inside),
+           simd::gather(t + 3, i, inside));
+    if (tex_->format == TextureFormat::R32F) r.w = select(inside, r.w, Float(1.0f));  // the swizzle's 1
+    return r;
 }
-
-glm::vec4 Sampler2D::sample(const glm::vec2& st) const { return lane0(sample(Vec2(Float(st.x), Float(st.y)))); }
 
 glm::vec4 Sampler2D::fetch(int x, int y) const { return lane0(fetch(Int(x), Int(y))); }
 
-Vec4 Sampler2D::sample_nearest(const Vec2& st) const {
-    return fetch(nearest_texel(st.x, tex_->width, tex_->wrap), nearest_texel(st.y, tex_->height, tex_->wrap));
+glm::vec4 Sampler2D::sample(const glm::vec2& st) const {
+    return lane0(sample_lod(Vec2(Float(st.x), Float(st.y)), Float(0.0f)));
 }
 
-Vec4 Sampler2D::sample_linear_float(const Vec2& st) const {
-    const LinearTaps u = linear_taps_float(st.x, tex_->width, tex_->wrap);
-    const LinearTaps v = linear_taps_float(st.y, tex_->height, tex_->wrap);
-    const Vec4 t00 = fetch(u.i0, v.i0), t10 = fetch(u.i1, v.i0);
-    const Vec4 t01 = fetch(u.i0, v.i1), t11 = fetch(u.i1, v.i1);
+// The filter within one level, float SoA (§3.1).
+Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter) const {
+    if (filter == TextureFilter::Nearest)
+        return texel(level, nearest_texel(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s, false),
+                     nearest_texel(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t, false));
+    const LinearTaps u = linear_taps_float(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s);
+    const LinearTaps v = linear_taps_float(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t);
+    const Vec4 t00 = texel(level, u.i0, v.i0), t10 = texel(level, u.i1, v.i0);
+    const Vec4 t01 = texel(level, u.i0, v.i1), t11 = texel(level, u.i1, v.i1);
     auto bilinear = [&](Float a00, Float a10, Float a01, Float a11) {
         return lerp_float(v.weight, lerp_float(u.weight, a00, a10), lerp_float(u.weight, a01, a11));
     };
@@ -249,23 +381,36 @@ Vec4 Sampler2D::sample_linear_float(const Vec2& st) const {
                 bilinear(t00.z, t10.z, t01.z, t11.z), bilinear(t00.w, t10.w, t01.w, t11.w));
 }
 
-Vec4 Sampler2D::sample_linear_unorm8(const Vec2& st) const {
-    const LinearTaps8 u = linear_taps_fixed(st.x, tex_->width, tex_->wrap);
-    const LinearTaps8 v = linear_taps_fixed(st.y, tex_->height, tex_->wrap);
-    // Every tap is inside the texture by construction (wrapped or clamped).
+// The filter within one level, 8-bit AoS (§3.2): the result as byte pairs,
+// rb = R | B << 16 and ga = G | A << 16, before conversion to float. With
+// level0 (every lane on level 0) the texel windows replace the gathers.
+void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, Int& rb,
+                              Int& ga) const {
+    const int32_t* texels = rgba8_.data();
+    if (filter == TextureFilter::Nearest) {
+        const Int x = nearest_texel(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s, true);
+        const Int y = nearest_texel(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t, true);
+        const Int t = simd::gather(texels, level.base + y * level.width + x, Mask(true));
+        rb = red_blue(t);
+        ga = green_alpha(t);
+        return;
+    }
+    const LinearTaps8 u = linear_taps_fixed(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s);
+    const LinearTaps8 v = linear_taps_fixed(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t);
     // Each row's two taps are neighbours but where the wrap or the clamp
     // joins them otherwise; those lanes are fetched again.
     Int t00, t10, t01, t11;
+    bool windowed = false;
+    if (level0) {
 #if defined(ST_SIMD_AVX512)
-    const bool windowed = fetch_window_groups(rgba8_, tex_->width, tex_->height, u, v, t00, t10, t01, t11) ||
-                          fetch_window(rgba8_, tex_->width, u, v, t00, t10, t01, t11);
+        windowed = fetch_window_groups(texels, tex_->width, tex_->height, u, v, t00, t10, t01, t11) ||
+                   fetch_window(texels, tex_->width, u, v, t00, t10, t01, t11);
 #else
-    const bool windowed = fetch_window(rgba8_, tex_->width, u, v, t00, t10, t01, t11);
+        windowed = fetch_window(texels, tex_->width, u, v, t00, t10, t01, t11);
 #endif
+    }
     if (!windowed) {
-        const int32_t* texels = rgba8_.data();
-        const Int w(tex_->width);
-        const Int row0 = v.i0 * w, row1 = v.i1 * w;
+        const Int row0 = level.base + v.i0 * level.width, row1 = level.base + v.i1 * level.width;
         simd::gather_pairs(texels, row0 + u.i0, t00, t10);
         simd::gather_pairs(texels, row1 + u.i0, t01, t11);
         const Mask apart = u.i1 != u.i0 + Int(1);
@@ -277,15 +422,120 @@ Vec4 Sampler2D::sample_linear_unorm8(const Vec2& st) const {
     // Two channels per lane, one in each 16-bit half (R and B, then G and
     // A), lerped at once.
     const Int wu = u.weight | (u.weight << 16), wv = v.weight | (v.weight << 16);
-    auto pairs = [&](int shift) {
-        auto half_bytes = [&](Int t) { return (t >> shift) & Int(0x00ff00ff); };
+    auto pairs = [&](auto half_bytes) {
         const Int bottom = lerp8_pairs(wu, half_bytes(t00), half_bytes(t10));
         const Int top = lerp8_pairs(wu, half_bytes(t01), half_bytes(t11));
         return lerp8_pairs(wv, bottom, top);
     };
-    const Int rb = pairs(0), ga = pairs(8);
-    return Vec4(unorm8_to_float(rb & Int(0xff)), unorm8_to_float(ga & Int(0xff)), unorm8_to_float(rb >> 16),
-                unorm8_to_float(ga >> 16));
+    rb = pairs([](Int t) { return red_blue(t); });
+    ga = pairs([](Int t) { return green_alpha(t); });
+}
+
+// The LOD selector (§2.4) and level selection (§2.6) for min == mag, GL's
+// default sampler state (no bias, MIN_LOD 0, MAX_LOD 1000). `lod` is
+// log2(rho) for an implicit LOD (the caller has applied 0.5 * fast_log2 or
+// the shortcut) or the shader's value for textureLod.
+Sampler2D::LevelChoice Sampler2D::choose_levels(Float lod) const {
+    LevelChoice c;
+    const Int last(last_level_);
+    if (mip_filter_ == MipFilter::Linear) {
+        const Float fl = floor(lod);
+        Float fpart = lod - fl;
+        Int l0 = itrunc(fl);
+        // Below the base or at or past the last level only one level counts.
+        const Mask below = l0 < Int(0);
+        l0 = select(below, Int(0), l0);
+        fpart = select(below, Float(0.0f), fpart);
+        const Mask top = !(l0 < last);
+        l0 = select(top, last, l0);
+        fpart = select(top, Float(0.0f), fpart);
+        c.level0 = l0;
+        c.level1 = select(top, last, l0 + Int(1));
+        c.fpart = fpart;
+        c.two_levels = true;
+    } else {
+        c.level0 = c.level1 = simd::clamp(iround(lod), Int(0), last);
+        c.fpart = Float(0.0f);
+    }
+    return c;
+}
+
+Vec4 Sampler2D::sample_levels(const Vec2& st, const LevelChoice& c) const {
+    const TextureFilter filter = tex_->min_filter;
+    const LevelLanes l0 = level_lanes(c.level0);
+    if (aos_) {
+        Int rb0, ga0;
+        filter_unorm8(st, l0, filter, false, rb0, ga0);
+        if (c.two_levels) {
+            // The 8-bit weight truncates fpart * 256 (§2.8).
+            const Int wl = itrunc(c.fpart * Float(256.0f));
+            const Int w = wl | (wl << 16);
+            Int rb1, ga1;
+            filter_unorm8(st, level_lanes(c.level1), filter, false, rb1, ga1);
+            rb0 = lerp8_pairs(w, rb0, rb1);
+            ga0 = lerp8_pairs(w, ga0, ga1);
+        }
+        return unpack_pairs(rb0, ga0);
+    }
+    const Vec4 c0 = filter_float(st, l0, filter);
+    if (!c.two_levels) return c0;
+    // The second level only where some lane of the 8-lane vector has a
+    // weight (unordered: NaN counts); elsewhere C0 as it is (§2.8).
+    const Mask blend = any_in_group(!(c.fpart <= Float(0.0f)));
+    if (none(blend)) return c0;
+    const Vec4 c1 = filter_float(st, level_lanes(c.level1), filter);
+    const Float f = simd::max(c.fpart, Float(0.0f));
+    return select(blend, Vec4(lerp_float(f, c0.x, c1.x), lerp_float(f, c0.y, c1.y), lerp_float(f, c0.z, c1.z),
+                              lerp_float(f, c0.w, c1.w)),
+                  c0);
+}
+
+Vec4 Sampler2D::sample(const Vec2& st) const {
+    const bool needs_lod = mip_filter_ != MipFilter::None || tex_->min_filter != tex_->mag_filter;
+    if (!needs_lod) {
+        // One level, one filter: no LOD at all (§1.1).
+        const LevelLanes l0 = level_lanes(Int(0));
+        if (!aos_) return filter_float(st, l0, tex_->mag_filter);
+        Int rb, ga;
+        filter_unorm8(st, l0, tex_->mag_filter, true, rb, ga);
+        return unpack_pairs(rb, ga);
+    }
+    // rho^2 per quad from its top-left lane's differences, at the base
+    // level's size; every op rounded on its own (§2.2).
+    const Float w(float(tex_->width)), h(float(tex_->height));
+    const Float s_tl = simd::shuffle(st.x, kQuadTL), t_tl = simd::shuffle(st.y, kQuadTL);
+    const Float dsdx = simd::shuffle(st.x, kQuadTR) - s_tl, dtdx = simd::shuffle(st.y, kQuadTR) - t_tl;
+    const Float dsdy = simd::shuffle(st.x, kQuadBL) - s_tl, dtdy = simd::shuffle(st.y, kQuadBL) - t_tl;
+    Float a = dsdx * w, c = dtdx * h, b = dsdy * w, d = dtdy * h;
+    a = a * a, b = b * b, c = c * c, d = d * d;
+    const Float rho2 = maxps(a + c, b + d);
+    const Int bits = simd::bit_cast_int(rho2);
+    const Int exponent = (bits >> 23) & Int(255);
+    if (mip_filter_ == MipFilter::Linear) {
+        // fast_log2: (E - 128) + mantissa in [1, 2), one rounded add.
+        const Float mantissa = simd::bit_cast_float((bits & Int(0x7fffff)) | Int(0x3f800000));
+        const Float lod = (simd::to_float(exponent - Int(128)) + mantissa) * Float(0.5f);
+        return sample_levels(st, choose_levels(lod));
+    }
+    // NEAREST or NONE: round_half_up(log2 rho) from the exponent alone.
+    const Int ipart = (exponent - Int(126)) >> 1;
+    LevelChoice choice;
+    choice.level0 = choice.level1 =
+        mip_filter_ == MipFilter::None ? Int(0) : simd::clamp(ipart, Int(0), Int(last_level_));
+    choice.fpart = Float(0.0f);
+    return sample_levels(st, choice);
+}
+
+Vec4 Sampler2D::sample_lod(const Vec2& st, Float lod) const {
+    const bool needs_lod = mip_filter_ != MipFilter::None || tex_->min_filter != tex_->mag_filter;
+    if (!needs_lod) return sample(st);
+    if (mip_filter_ == MipFilter::None) {
+        LevelChoice choice;
+        choice.level0 = choice.level1 = Int(0);
+        choice.fpart = Float(0.0f);
+        return sample_levels(st, choice);
+    }
+    return sample_levels(st, choose_levels(lod));
 }
 
 }  // namespace st

@@ -1,5 +1,8 @@
 // sampler2d.h: a 2D texture as the CPU twins sample it, filtered the way
-// llvmpipe filters it (see sampler2d.cpp for the arithmetic of each path).
+// llvmpipe filters it: level selection from the quad's derivatives or an
+// explicit LOD, then the 8-bit AoS or the float SoA filter of each level
+// (sampler2d.cpp has the arithmetic; docs/llvmpipe/texture-sampling.md and
+// mipmaps-cubes-formats.md the facts behind it).
 #pragma once
 
 #include <cstdint>
@@ -17,29 +20,54 @@ class Sampler2D {
 public:
     explicit Sampler2D(const Texture& texture);
 
-    // GLSL texture(sampler2D, vec2) without mipmaps.
-    glm::vec4 sample(const glm::vec2& st) const;
-    // GLSL texelFetch(sampler2D, ivec2, 0); out-of-range texels return 0.
-    glm::vec4 fetch(int x, int y) const;
-
-    // The same for every lane of a fragment twin at once; the calls above
-    // are one lane of these.
+    // GLSL texture(sampler2D, vec2): in a fragment twin the LOD comes from
+    // each 2x2 quad of lanes (its top-left, top-right and bottom-left
+    // lanes, as llvmpipe takes it), so call it on whole quads.
     Vec4 sample(const Vec2& st) const;
-    Vec4 fetch(Int x, Int y) const;
+    // GLSL textureLod(sampler2D, vec2, float): one LOD per lane.
+    Vec4 sample_lod(const Vec2& st, Float lod) const;
+    // GLSL texelFetch(sampler2D, ivec2, level); out-of-range texels and
+    // levels return 0 (with the format's swizzle: R32F gives (0, 0, 0, 1)).
+    Vec4 fetch(Int x, Int y, Int level = Int(0)) const;
+
+    // One lane of the above, for vertex twins and host code (no quad, so
+    // texture() there is textureLod(…, 0), as Mesa lowers it).
+    glm::vec4 sample(const glm::vec2& st) const;
+    glm::vec4 fetch(int x, int y) const;
 
     int width() const { return tex_->width; }
     int height() const { return tex_->height; }
 
+    // A level's size and where its texels start, one value per lane (lanes
+    // may sample different levels).
+    struct LevelLanes {
+        Int width, height;
+        Float width_f, height_f;
+        Int base;  // index of the level's first texel
+    };
+
 private:
-    Vec4 sample_nearest(const Vec2& st) const;
-    Vec4 sample_linear_float(const Vec2& st) const;
-    Vec4 sample_linear_unorm8(const Vec2& st) const;
+    struct LevelChoice;
+    LevelLanes level_lanes(Int level) const;
+    LevelChoice choose_levels(Float lod) const;
+    Vec4 sample_levels(const Vec2& st, const LevelChoice& choice) const;
+    Vec4 filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter) const;
+    void filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, Int& rb,
+                       Int& ga) const;
+    Vec4 texel(const LevelLanes& level, Int x, Int y) const;
 
     const Texture* tex_;
-    // RGBA8 texels as one int32 each (little-endian: R in the low byte), and
-    // kLanes more, so that a texel and its right neighbour are always one
-    // 8-byte load and a row of kLanes texels from any texel one load.
+    int last_level_ = 0;
+    bool aos_ = false;        // RGBA8 with REPEAT/CLAMP_TO_EDGE: llvmpipe's 8-bit path
+    bool pot_w_ = true, pot_h_ = true;
+    MipFilter mip_filter_ = MipFilter::None;
+    std::vector<int32_t> level_width_, level_height_, level_base_;
+    // RGBA8 texels of every level as one int32 each (little-endian: R in the
+    // low byte), and kLanes more, so that a texel and its right neighbour
+    // are always one 8-byte load and a row of kLanes texels one load.
     std::vector<int32_t> rgba8_;
+    // The float formats' texels as stored (texture/texel_formats.h), RGBA.
+    std::vector<float> rgba32_;
 };
 
 }  // namespace st

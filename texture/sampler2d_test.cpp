@@ -14,8 +14,8 @@ namespace {
 Texture ramp(TextureFormat format, TextureFilter filter, TextureWrap wrap, int w, int h) {
     Texture t;
     t.format = format;
-    t.filter = filter;
-    t.wrap = wrap;
+    t.set_filter(filter);
+    t.set_wrap(wrap);
     t.width = w;
     t.height = h;
     for (int y = 0; y < h; ++y)
@@ -142,7 +142,7 @@ TEST(Nearest, PicksTheTexelUnderTheCoordinate) {
 TEST(Unorm8Filter, WeightsAreQuantisedTo8Bits) {
     Texture t;
     t.format = TextureFormat::RGBA8;
-    t.wrap = TextureWrap::ClampToEdge;
+    t.set_wrap(TextureWrap::ClampToEdge);
     t.width = 2;
     t.height = 1;
     t.texels8 = {0, 0, 0, 0, 255, 255, 255, 255};

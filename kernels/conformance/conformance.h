@@ -78,4 +78,25 @@ private:
     glm::vec2 slow_a_{0.0f}, slow_b_{0.0f};
 };
 
+class SampleImplicitFragment final : public FragmentProgram<SampleImplicitFragment> {  // sample_implicit.frag
+public:
+    void bind(const Bindings& b) override { tex_ = &b.sampler("tex"); }
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    const Sampler2D* tex_ = nullptr;
+};
+
+class SampleLodFragment final : public FragmentProgram<SampleLodFragment> {  // sample_lod.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    const Sampler2D* tex_ = nullptr;
+    float lod_min_ = 0.0f, lod_max_ = 0.0f;
+};
+
 }  // namespace st
