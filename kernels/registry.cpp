@@ -48,6 +48,9 @@ const std::map<std::string, Factory<FragmentTwin>>& fragment_twins() {
         {"loop_budget", [] { return std::make_unique<LoopBudgetFragment>(); }},
         {"sample_implicit", [] { return std::make_unique<SampleImplicitFragment>(); }},
         {"sample_lod", [] { return std::make_unique<SampleLodFragment>(); }},
+        {"sample_bias", [] { return std::make_unique<SampleBiasFragment>(); }},
+        {"sample_grad", [] { return std::make_unique<SampleGradFragment>(); }},
+        {"texel_fetch", [] { return std::make_unique<TexelFetchFragment>(); }},
     };
     return twins;
 }

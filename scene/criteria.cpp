@@ -13,6 +13,7 @@ Criteria Criteria::read(JsonReader& scene) {
     c.max_diff_8bit = r->integer_or("max_diff_8bit", c.max_diff_8bit, 0, 255);
     c.max_rel_diff_float = r->number_or("max_rel_diff_float", c.max_rel_diff_float, 0, 1e30);
     c.min_identical_fraction_8bit = r->number_or("min_identical_fraction_8bit", 0.0, 0.0, 1.0);
+    c.min_identical_fraction_float = r->number_or("min_identical_fraction_float", 0.0, 0.0, 1.0);
     c.nonfinite_if_identical = r->choice_or("nonfinite", "none", {"none", "identical"}) == "identical";
     c.rationale = r->string_or("rationale", "");
     r->finish();
@@ -32,6 +33,8 @@ std::vector<std::string> Criteria::failures(const CompareMetrics& m, long covera
         fail("max_rel_diff_float", m.max_rel_diff_float, max_rel_diff_float);
     if (m.identical_fraction_8bit < min_identical_fraction_8bit)
         fail("identical_fraction_8bit", m.identical_fraction_8bit, min_identical_fraction_8bit);
+    if (m.identical_fraction_float < min_identical_fraction_float)
+        fail("identical_fraction_float", m.identical_fraction_float, min_identical_fraction_float);
     if (nonfinite_if_identical) {
         if (m.nonfinite_mismatch) fail("non-finite channels that differ", m.nonfinite_mismatch, 0);
     } else if (m.nonfinite_a || m.nonfinite_b) {

@@ -16,6 +16,8 @@ struct Criteria {
     int max_diff_8bit = 1;
     double max_rel_diff_float = 1e-5;
     double min_identical_fraction_8bit = 0.0;
+    // Conformance scenes ask for 1: every pixel's float bits equal.
+    double min_identical_fraction_float = 0.0;
     // "nonfinite": "identical" allows inf and NaN where both backends write
     // the same bits (a shader that divides by zero on purpose); by default
     // any non-finite channel fails.

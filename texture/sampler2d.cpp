@@ -263,10 +263,12 @@ glm::vec4 lane0(const Vec4& v) { return glm::vec4(v.x[0], v.y[0], v.z[0], v.w[0]
 
 }  // namespace
 
-// The levels one sample reads and how it weighs them (§2.6).
+// The levels one sample reads and how it weighs them (§2.6), and whether
+// it is minified (§2.7).
 struct Sampler2D::LevelChoice {
     Int level0, level1;
     Float fpart;  // weight of level1; 0 where only level0 counts
+    Mask minified;
     bool two_levels = false;
 };
 
@@ -366,12 +368,21 @@ glm::vec4 Sampler2D::sample(const glm::vec2& st) const {
 }
 
 // The filter within one level, float SoA (§3.1).
-Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter) const {
+Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter,
+                              Mask as_nearest) const {
     if (filter == TextureFilter::Nearest)
         return texel(level, nearest_texel(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s, false),
                      nearest_texel(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t, false));
-    const LinearTaps u = linear_taps_float(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s);
-    const LinearTaps v = linear_taps_float(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t);
+    LinearTaps u = linear_taps_float(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s);
+    LinearTaps v = linear_taps_float(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t);
+    // Lanes that want NEAREST in a vector that filters linearly take the
+    // bilinear code with each weight made 0 or 1: (w > 0.5 or NaN) ? 1 : 0
+    // (lp_build_sample_image_linear with a linear mask, §2.7).
+    if (any(as_nearest)) {
+        auto snap = [&](Float w) { return select(as_nearest, select(!(w <= Float(0.5f)), Float(1.0f), Float(0.0f)), w); };
+        u.weight = snap(u.weight);
+        v.weight = snap(v.weight);
+    }
     const Vec4 t00 = texel(level, u.i0, v.i0), t10 = texel(level, u.i1, v.i0);
     const Vec4 t01 = texel(level, u.i0, v.i1), t11 = texel(level, u.i1, v.i1);
     auto bilinear = [&](Float a00, Float a10, Float a01, Float a11) {
@@ -438,7 +449,11 @@ void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFi
 Sampler2D::LevelChoice Sampler2D::choose_levels(Float lod) const {
     LevelChoice c;
     const Int last(last_level_);
-    if (mip_filter_ == MipFilter::Linear) {
+    c.minified = !(lod <= Float(0.0f));  // unordered: a NaN LOD minifies
+    if (mip_filter_ == MipFilter::None) {
+        c.level0 = c.level1 = Int(0);
+        c.fpart = Float(0.0f);
+    } else if (mip_filter_ == MipFilter::Linear) {
         const Float fl = floor(lod);
         Float fpart = lod - fl;
         Int l0 = itrunc(fl);
@@ -460,10 +475,10 @@ Sampler2D::LevelChoice Sampler2D::choose_levels(Float lod) const {
     return c;
 }
 
-Vec4 Sampler2D::sample_levels(const Vec2& st, const LevelChoice& c) const {
-    const TextureFilter filter = tex_->min_filter;
+// min == mag: the one filter at the chosen levels.
+Vec4 Sampler2D::filter_levels(const Vec2& st, const LevelChoice& c, TextureFilter filter, bool aos) const {
     const LevelLanes l0 = level_lanes(c.level0);
-    if (aos_) {
+    if (aos) {
         Int rb0, ga0;
         filter_unorm8(st, l0, filter, false, rb0, ga0);
         if (c.two_levels) {
@@ -477,65 +492,156 @@ Vec4 Sampler2D::sample_levels(const Vec2& st, const LevelChoice& c) const {
         }
         return unpack_pairs(rb0, ga0);
     }
-    const Vec4 c0 = filter_float(st, l0, filter);
+    const Vec4 c0 = filter_float(st, l0, filter, Mask(false));
     if (!c.two_levels) return c0;
     // The second level only where some lane of the 8-lane vector has a
     // weight (unordered: NaN counts); elsewhere C0 as it is (§2.8).
-    const Mask blend = any_in_group(!(c.fpart <= Float(0.0f)));
+    return blend_second_level(st, c, filter, Mask(false), any_in_group(!(c.fpart <= Float(0.0f))), c0);
+}
+
+// C0 blended with level1's result in the lanes of `blend`:
+// fma(max(fpart, 0), C1 - C0, C0).
+Vec4 Sampler2D::blend_second_level(const Vec2& st, const LevelChoice& c, TextureFilter filter, Mask as_nearest,
+                                   Mask blend, const Vec4& c0) const {
     if (none(blend)) return c0;
-    const Vec4 c1 = filter_float(st, level_lanes(c.level1), filter);
+    const Vec4 c1 = filter_float(st, level_lanes(c.level1), filter, as_nearest);
     const Float f = simd::max(c.fpart, Float(0.0f));
     return select(blend, Vec4(lerp_float(f, c0.x, c1.x), lerp_float(f, c0.y, c1.y), lerp_float(f, c0.z, c1.z),
                               lerp_float(f, c0.w, c1.w)),
                   c0);
 }
 
-Vec4 Sampler2D::sample(const Vec2& st) const {
-    const bool needs_lod = mip_filter_ != MipFilter::None || tex_->min_filter != tex_->mag_filter;
-    if (!needs_lod) {
-        // One level, one filter: no LOD at all (§1.1).
-        const LevelLanes l0 = level_lanes(Int(0));
-        if (!aos_) return filter_float(st, l0, tex_->mag_filter);
-        Int rb, ga;
-        filter_unorm8(st, l0, tex_->mag_filter, true, rb, ga);
-        return unpack_pairs(rb, ga);
+Vec4 Sampler2D::sample_levels(const Vec2& st, const LevelChoice& c, bool per_quad_lod) const {
+    const TextureFilter min = tex_->min_filter, mag = tex_->mag_filter;
+    // RGBA8 stays on the 8-bit path unless min != mag with a LOD per lane (§1.2).
+    const bool aos = aos_ && (min == mag || per_quad_lod);
+    if (min == mag) return filter_levels(st, c, min, aos);
+    if (aos) {
+        // Per quad: minified quads take the min filter at their levels, the
+        // others the mag filter at the base, without mip filtering.
+        LevelChoice base;
+        base.level0 = base.level1 = Int(0);
+        base.fpart = Float(0.0f);
+        const Vec4 minified = filter_levels(st, c, min, true);
+        const Vec4 magnified = filter_levels(st, base, mag, true);
+        return select(c.minified, minified, magnified);
     }
-    // rho^2 per quad from its top-left lane's differences, at the base
-    // level's size; every op rounded on its own (§2.2).
+    // SoA decides per 8-lane vector: with no lane needing LINEAR, true
+    // NEAREST (with the mip filter when min is NEAREST); otherwise every lane
+    // filters linearly, the NEAREST ones with snapped weights, and with a
+    // LINEAR mip filter the second level blends where a lane is minified.
+    const Mask needs_linear = min == TextureFilter::Linear ? c.minified : !c.minified;
+    const Mask linear_vectors = any_in_group(needs_linear);
+    Vec4 nearest(Float(0.0f)), linear(Float(0.0f));
+    if (!all(linear_vectors)) {
+        if (min == TextureFilter::Nearest) {
+            nearest = filter_levels(st, c, TextureFilter::Nearest, false);
+        } else {
+            nearest = filter_float(st, level_lanes(Int(0)), TextureFilter::Nearest, Mask(false));
+        }
+    }
+    if (any(linear_vectors)) {
+        const Mask as_nearest = !needs_linear;
+        linear = filter_float(st, level_lanes(c.level0), TextureFilter::Linear, as_nearest);
+        if (c.two_levels)
+            linear = blend_second_level(st, c, TextureFilter::Linear, as_nearest,
+                                        linear_vectors && any_in_group(c.minified), linear);
+    }
+    return select(linear_vectors, linear, nearest);
+}
+
+bool Sampler2D::needs_lod() const {
+    return mip_filter_ != MipFilter::None || tex_->min_filter != tex_->mag_filter;
+}
+
+// One level, one filter: no LOD at all, whatever the op (§1.1).
+Vec4 Sampler2D::sample_base(const Vec2& st) const {
+    const LevelLanes l0 = level_lanes(Int(0));
+    if (!aos_) return filter_float(st, l0, tex_->mag_filter, Mask(false));
+    Int rb, ga;
+    filter_unorm8(st, l0, tex_->mag_filter, true, rb, ga);
+    return unpack_pairs(rb, ga);
+}
+
+// rho^2 per quad from its top-left lane's differences, at the base level's
+// size; every op rounded on its own (§2.2).
+Float Sampler2D::quad_rho2(const Vec2& st) const {
     const Float w(float(tex_->width)), h(float(tex_->height));
     const Float s_tl = simd::shuffle(st.x, kQuadTL), t_tl = simd::shuffle(st.y, kQuadTL);
     const Float dsdx = simd::shuffle(st.x, kQuadTR) - s_tl, dtdx = simd::shuffle(st.y, kQuadTR) - t_tl;
     const Float dsdy = simd::shuffle(st.x, kQuadBL) - s_tl, dtdy = simd::shuffle(st.y, kQuadBL) - t_tl;
     Float a = dsdx * w, c = dtdx * h, b = dsdy * w, d = dtdy * h;
     a = a * a, b = b * b, c = c * c, d = d * d;
-    const Float rho2 = maxps(a + c, b + d);
+    return maxps(a + c, b + d);
+}
+
+// 0.5 * fast_log2(rho^2): (E - 128) + the mantissa in [1, 2), one rounded
+// add, then halved (§2.4).
+ST_INLINE Float half_fast_log2(Float rho2) {
     const Int bits = simd::bit_cast_int(rho2);
-    const Int exponent = (bits >> 23) & Int(255);
-    if (mip_filter_ == MipFilter::Linear) {
-        // fast_log2: (E - 128) + mantissa in [1, 2), one rounded add.
-        const Float mantissa = simd::bit_cast_float((bits & Int(0x7fffff)) | Int(0x3f800000));
-        const Float lod = (simd::to_float(exponent - Int(128)) + mantissa) * Float(0.5f);
-        return sample_levels(st, choose_levels(lod));
-    }
-    // NEAREST or NONE: round_half_up(log2 rho) from the exponent alone.
+    const Float mantissa = simd::bit_cast_float((bits & Int(0x7fffff)) | Int(0x3f800000));
+    return (simd::to_float(((bits >> 23) & Int(255)) - Int(128)) + mantissa) * Float(0.5f);
+}
+
+// The selector for rho^2 without a shader bias (texture(), textureGrad):
+// GL's default state takes the exponent shortcut for NEAREST and NONE mip
+// filters, round_half_up(log2 rho), and minifies where rho^2 > 1
+// (unordered); LINEAR goes through 0.5 * fast_log2 (§2.4).
+Sampler2D::LevelChoice Sampler2D::choose_from_rho2(Float rho2) const {
+    if (mip_filter_ == MipFilter::Linear) return choose_levels(half_fast_log2(rho2));
+    LevelChoice c;
+    const Int exponent = (simd::bit_cast_int(rho2) >> 23) & Int(255);
     const Int ipart = (exponent - Int(126)) >> 1;
-    LevelChoice choice;
-    choice.level0 = choice.level1 =
-        mip_filter_ == MipFilter::None ? Int(0) : simd::clamp(ipart, Int(0), Int(last_level_));
-    choice.fpart = Float(0.0f);
-    return sample_levels(st, choice);
+    c.level0 = c.level1 = mip_filter_ == MipFilter::None ? Int(0) : simd::clamp(ipart, Int(0), Int(last_level_));
+    c.fpart = Float(0.0f);
+    c.minified = !(rho2 <= Float(1.0f));
+    return c;
+}
+
+Vec4 Sampler2D::sample(const Vec2& st) const {
+    if (!needs_lod()) return sample_base(st);
+    return sample_levels(st, choose_from_rho2(quad_rho2(st)), true);
+}
+
+Vec4 Sampler2D::sample_bias(const Vec2& st, Float bias) const {
+    if (!needs_lod()) return sample_base(st);
+    // The quad's LOD plus each lane's bias: no shortcut (§2.4 step 3).
+    return sample_levels(st, choose_levels(half_fast_log2(quad_rho2(st)) + bias), false);
 }
 
 Vec4 Sampler2D::sample_lod(const Vec2& st, Float lod) const {
-    const bool needs_lod = mip_filter_ != MipFilter::None || tex_->min_filter != tex_->mag_filter;
-    if (!needs_lod) return sample(st);
-    if (mip_filter_ == MipFilter::None) {
-        LevelChoice choice;
-        choice.level0 = choice.level1 = Int(0);
-        choice.fpart = Float(0.0f);
-        return sample_levels(st, choice);
+    if (!needs_lod()) return sample_base(st);
+    return sample_levels(st, choose_levels(lod), false);
+}
+
+Vec4 Sampler2D::sample_grad(const Vec2& st, const Vec2& dx, const Vec2& dy) const {
+    if (!needs_lod()) return sample_base(st);
+    // Per lane, each product, square and sum rounded, and an infinite or
+    // NaN rho^2 taken as 0 (§2.3).
+    const Float w(float(tex_->width)), h(float(tex_->height));
+    Float a = w * dx.x, c = h * dx.y, b = w * dy.x, d = h * dy.y;
+    a = a * a, b = b * b, c = c * c, d = d * d;
+    Float rho2 = maxps(a + c, b + d);
+    const Mask special = (simd::bit_cast_int(rho2) & Int(0x7f800000)) == Int(0x7f800000);
+    rho2 = select(special, Float(0.0f), rho2);
+    return sample_levels(st, choose_from_rho2(rho2), false);
+}
+
+Int Sampler2D::size_x(Int lod) const { return texture_size(lod, true); }
+Int Sampler2D::size_y(Int lod) const { return texture_size(lod, false); }
+
+// textureSize: the lod of lane 0 of each 8-lane vector for the whole
+// vector; 0 outside [0, last level] (§6).
+Int Sampler2D::texture_size(Int lod, bool x) const {
+    Int out(0);
+    for (int g = 0; g < kLanes / 8; ++g) {
+        const int level = lod[8 * g];
+        const int size = level < 0 || level > last_level_ ? 0
+                         : x                              ? level_width_[size_t(level)]
+                                                          : level_height_[size_t(level)];
+        out = select(Mask::from_bits(0xffu << (8 * g)), Int(size), out);
     }
-    return sample_levels(st, choose_levels(lod));
+    return out;
 }
 
 }  // namespace st

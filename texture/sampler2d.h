@@ -24,8 +24,17 @@ public:
     // each 2x2 quad of lanes (its top-left, top-right and bottom-left
     // lanes, as llvmpipe takes it), so call it on whole quads.
     Vec4 sample(const Vec2& st) const;
+    // GLSL texture(sampler2D, vec2, float bias): the quad's LOD plus each
+    // lane's bias.
+    Vec4 sample_bias(const Vec2& st, Float bias) const;
     // GLSL textureLod(sampler2D, vec2, float): one LOD per lane.
     Vec4 sample_lod(const Vec2& st, Float lod) const;
+    // GLSL textureGrad(sampler2D, vec2, vec2 dPdx, vec2 dPdy): per lane.
+    Vec4 sample_grad(const Vec2& st, const Vec2& dpdx, const Vec2& dpdy) const;
+    // GLSL textureSize(sampler2D, lod).x and .y (lane 0's lod decides, as
+    // in llvmpipe; 0 for a level outside the chain).
+    Int size_x(Int lod) const;
+    Int size_y(Int lod) const;
     // GLSL texelFetch(sampler2D, ivec2, level); out-of-range texels and
     // levels return 0 (with the format's swizzle: R32F gives (0, 0, 0, 1)).
     Vec4 fetch(Int x, Int y, Int level = Int(0)) const;
@@ -49,9 +58,17 @@ public:
 private:
     struct LevelChoice;
     LevelLanes level_lanes(Int level) const;
+    bool needs_lod() const;
+    Vec4 sample_base(const Vec2& st) const;
+    Float quad_rho2(const Vec2& st) const;
     LevelChoice choose_levels(Float lod) const;
-    Vec4 sample_levels(const Vec2& st, const LevelChoice& choice) const;
-    Vec4 filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter) const;
+    LevelChoice choose_from_rho2(Float rho2) const;
+    Vec4 sample_levels(const Vec2& st, const LevelChoice& choice, bool per_quad_lod) const;
+    Vec4 filter_levels(const Vec2& st, const LevelChoice& choice, TextureFilter filter, bool aos) const;
+    Vec4 blend_second_level(const Vec2& st, const LevelChoice& choice, TextureFilter filter, Mask as_nearest,
+                            Mask blend, const Vec4& c0) const;
+    Vec4 filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter, Mask as_nearest) const;
+    Int texture_size(Int lod, bool x) const;
     void filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, Int& rb,
                        Int& ga) const;
     Vec4 texel(const LevelLanes& level, Int x, Int y) const;

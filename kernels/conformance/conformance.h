@@ -99,4 +99,39 @@ private:
     float lod_min_ = 0.0f, lod_max_ = 0.0f;
 };
 
+class SampleBiasFragment final : public FragmentProgram<SampleBiasFragment> {  // sample_bias.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    const Sampler2D* tex_ = nullptr;
+    float lod_min_ = 0.0f, lod_max_ = 0.0f;
+};
+
+class SampleGradFragment final : public FragmentProgram<SampleGradFragment> {  // sample_grad.frag
+public:
+    void bind(const Bindings& b) override {
+        tex_ = &b.sampler("tex");
+        grad_scale_ = b.get_float("grad_scale");
+    }
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    const Sampler2D* tex_ = nullptr;
+    float grad_scale_ = 0.0f;
+};
+
+class TexelFetchFragment final : public FragmentProgram<TexelFetchFragment> {  // texel_fetch.frag
+public:
+    void bind(const Bindings& b) override { tex_ = &b.sampler("tex"); }
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    const Sampler2D* tex_ = nullptr;
+};
+
 }  // namespace st

@@ -1,0 +1,140 @@
+#!/usr/bin/env python3
+"""Writes the conformance scenes (scenes/conformance-*.json): the shading
+runtime's behaviours pinned against llvmpipe, each a small program from
+glsl/conformance/ on a few triangles. Run from anywhere; it rewrites the
+files in place. After adding scenes, run `shadertwin compare` on them and
+`shadertwin golden update <new scenes>`."""
+import json
+import os
+
+SCENES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "scenes")
+def quad(x0,y0,x1,y1,u0,v0,u1,v1,cols=None, skew=3.0):
+    # a skewed quad in two triangles, so edges cut through blocks
+    P=[[x0+skew,y0],[x1,y0+skew],[x1-skew,y1],[x0,y1-skew]]
+    U=[[u0,v0],[u1,v0],[u1,v1],[u0,v1]]
+    C=cols or [[1,1,1,1],[0.5,1,0.75,1],[1,0.25,1,1],[0.8,0.6,0.4,1]]
+    t=[]
+    for a,b,c in ((0,1,2),(0,2,3)):
+        t.append({"positions":[P[a],P[b],P[c]],"colours":[C[a],C[b],C[c]],"uvs":[U[a],U[b],U[c]]})
+    return t
+def write(name, d):
+    c=d.setdefault("criteria",{})
+    c["min_identical_fraction_float"]=1
+    c.setdefault("rationale","A conformance scene: the twin must give llvmpipe's bits in every pixel.")
+    open(os.path.join(SCENES, f"conformance-{name}.json"),"w").write(json.dumps(d,indent=1)+"\n")
+tex=lambda s,**k: dict({"sampler":s},**k)
+write("loop-exit",{"kind":"conformance",
+ "description":"A search loop whose lanes leave at different passes (alpha test per step), sampling an rgba8 texture inside the loop.",
+ "width":64,"height":64,"fragment":"loop_exit",
+ "uniforms":[{"name":"steps","int":24},{"name":"dir","vec2":[0.013,0.021]},{"name":"threshold","float":0.8}],
+ "textures":[tex("tex",format="rgba8",filter="linear",wrap="repeat",width=16,height=16,pattern="noise",seed=3)],
+ "triangles":quad(1.5,2.25,62.5,61.75,-0.2,-0.1,1.3,1.2)})
+write("branch-texture",{"kind":"conformance",
+ "description":"Texture reads on both sides of a divergent branch: rgba8 linear repeat on one side, rgba32f nearest clamp on the other.",
+ "width":64,"height":64,"fragment":"branch_texture",
+ "uniforms":[{"name":"split","float":0.8}],
+ "textures":[tex("tex_a",format="rgba8",filter="linear",wrap="repeat",width=8,height=8,pattern="noise",seed=5),
+             tex("tex_b",format="rgba32f",filter="nearest",wrap="clamp",width=12,height=10,pattern="noise",seed=6)],
+ "triangles":quad(2.5,1.5,61.5,62.5,-0.1,-0.1,1.1,1.1)})
+write("derivatives",{"kind":"conformance",
+ "description":"dFdx, dFdy and fwidth of computed values: a polynomial, its square and a step function.",
+ "width":64,"height":64,"fragment":"derivatives",
+ "uniforms":[{"name":"scale","float":7.0}],
+ "triangles":quad(0.5,3.5,63.5,60.5,-0.3,0.1,1.7,1.4)})
+write("discard",{"kind":"conformance",
+ "description":"discard on a pattern and inside a loop, over a depth-tested background triangle: discarded pixels write neither colour nor depth.",
+ "width":64,"height":64,"fragment":"discard","depth_test":True,"clear_colour":[0.1,0.2,0.3,1],
+ "uniforms":[{"name":"steps","int":12}],
+ "triangles":quad(1.5,2.5,62.5,61.5,0.05,0.1,1.0,1.2)})
+write("non-finite",{"kind":"conformance",
+ "description":"A shader writing +-infinity and NaN (x / 0, 0 / 0) and comparing against NaN; both backends must write the same bits.",
+ "width":64,"height":64,"fragment":"non_finite",
+ "uniforms":[{"name":"zero","float":0.0}],
+ "criteria":{"nonfinite":"identical","rationale":"The shader divides by zero on purpose: every channel is +-inf or NaN somewhere. Non-finite values are allowed where both backends write the same bits."},
+ "triangles":quad(0,0,64,64,0.0,0.0,1.0,1.0,skew=0.0)})
+write("loop-budget",{"kind":"conformance",
+ "description":"The shared budget of 65535 loop passes per 8-lane vector: a covered pixel and an uncovered helper lane each loop 100000 times, so the short loop after runs once in their vectors only.",
+ "width":64,"height":64,"fragment":"loop_budget",
+ "uniforms":[{"name":"long_steps","int":100000},{"name":"short_steps","int":40},
+             {"name":"slow_a","vec2":[21,30]},{"name":"slow_b","vec2":[10,2]}],
+ "triangles":quad(1.5,2.5,62.5,61.5,0,0,1,1)})
+
+def strips(scales, lod_cols=False):
+    # 8 vertical strips, each a skewed quad with its own uv scale (so its own LOD)
+    tris=[]
+    n=len(scales)
+    for i,s in enumerate(scales):
+        x0=i*64/n+0.25; x1=(i+1)*64/n-0.25
+        y0=1.5; y1=62.5
+        u0=0.1*i; v0=0.05*i
+        du=s*(x1-x0)/16; dv=s*(y1-y0)/16*1.13
+        P=[[x0,y0],[x1,y0+1.5],[x1,y1],[x0+0.5,y1-1.0]]
+        U=[[u0,v0],[u0+du,v0+0.07*s],[u0+du*1.05,v0+dv],[u0-0.03*s,v0+dv*0.97]]
+        if lod_cols:
+            C=[[0,1,1,1],[0.15,1,1,1],[1,1,1,1],[0.85,1,1,1]]
+        else:
+            C=[[1,1,1,1],[0.9,1,0.8,1],[1,0.85,1,1],[0.95,0.9,1,1]]
+        for a,b,c in ((0,1,2),(0,2,3)):
+            tris.append({"positions":[P[a],P[b],P[c]],"colours":[C[a],C[b],C[c]],"uvs":[U[a],U[b],U[c]]})
+    return tris
+scales=[0.4,0.9,1.0,1.7,2.0,3.3,6.0,13.0]
+for fmt in ["rgba8","rgba32f","rgba16f","r32f"]:
+    for mf in ["nearest_mipmap_nearest","linear_mipmap_nearest","nearest_mipmap_linear","linear_mipmap_linear"]:
+        mag = "linear" if mf.startswith("linear") else "nearest"
+        short = mf.replace("_mipmap_","-mip-").replace("nearest","n").replace("linear","l")
+        write(f"mip-{fmt}-{mf.replace('_mipmap_','-mip-').replace('_','-')}",{"kind":"conformance",
+          "description":f"texture() with implicit LOD on a {fmt} mip chain (16x16, distinct levels), min {mf}, mag {mag}, repeat: eight strips from magnified to minified 13x.",
+          "width":64,"height":64,"fragment":"sample_implicit",
+          "textures":[{"sampler":"tex","format":fmt,"min_filter":mf,"mag_filter":mag,"wrap":"repeat","width":16,"height":16,"pattern":"noise","seed":11,"mipmaps":"distinct"}],
+          "triangles":strips(scales)})
+for fmt in ["rgba8","rgba32f"]:
+    for wrap in ["clamp","mirrored_repeat"]:
+        write(f"mip-{fmt}-wrap-{wrap.replace('_','-')}",{"kind":"conformance",
+          "description":f"texture() with implicit LOD, {fmt} 12x10 (npot) box-filtered chain, linear_mipmap_linear, wrap {wrap}.",
+          "width":64,"height":64,"fragment":"sample_implicit",
+          "textures":[{"sampler":"tex","format":fmt,"min_filter":"linear_mipmap_linear","mag_filter":"linear","wrap":wrap,"width":12,"height":10,"pattern":"noise","seed":12,"mipmaps":"box"}],
+          "triangles":strips([s*1.3 for s in scales])})
+for fmt in ["rgba8","rgba32f"]:
+    for mf in ["linear_mipmap_nearest","linear_mipmap_linear"]:
+        write(f"mip-lod-{fmt}-{mf.replace('_mipmap_','-mip-').replace('_','-')}",{"kind":"conformance",
+          "description":f"textureLod() with a per-pixel LOD from -1.5 to 5.5 across level boundaries, {fmt} 16x16 distinct levels, min {mf}.",
+          "width":64,"height":64,"fragment":"sample_lod",
+          "uniforms":[{"name":"lod_min","float":-1.5},{"name":"lod_max","float":5.5}],
+          "textures":[{"sampler":"tex","format":fmt,"min_filter":mf,"mag_filter":"linear","wrap":"repeat","width":16,"height":16,"pattern":"noise","seed":13,"mipmaps":"distinct"}],
+          "triangles":strips([1.0]*8, lod_cols=True)})
+# min != mag
+for fmt in ["rgba8","rgba32f"]:
+    for mn,mg in [("linear_mipmap_linear","nearest"),("nearest_mipmap_nearest","linear"),("linear","nearest"),("nearest","linear"),("nearest_mipmap_linear","linear")]:
+        tag=f"{mn.replace('_mipmap_','-mip-').replace('_','-')}-mag-{mg}"
+        write(f"minmag-{fmt}-{tag}",{"kind":"conformance",
+          "description":f"texture() with min {mn} and mag {mg} on a {fmt} 16x16 chain: the switch between magnified and minified quads (per quad on the 8-bit path, per 8-lane vector on the float path).",
+          "width":64,"height":64,"fragment":"sample_implicit",
+          "textures":[{"sampler":"tex","format":fmt,"min_filter":mn,"mag_filter":mg,"wrap":"repeat","width":16,"height":16,"pattern":"noise","seed":21,"mipmaps":"distinct"}],
+          "triangles":strips([0.5,0.8,0.95,1.02,1.1,1.6,2.4,5.0])})
+        write(f"minmag-lod-{fmt}-{tag}",{"kind":"conformance",
+          "description":f"textureLod() from -1 to 3 with min {mn} and mag {mg} on a {fmt} 16x16 chain (rgba8 leaves the 8-bit path here).",
+          "width":64,"height":64,"fragment":"sample_lod",
+          "uniforms":[{"name":"lod_min","float":-1.0},{"name":"lod_max","float":3.0}],
+          "textures":[{"sampler":"tex","format":fmt,"min_filter":mn,"mag_filter":mg,"wrap":"repeat","width":16,"height":16,"pattern":"noise","seed":22,"mipmaps":"distinct"}],
+          "triangles":strips([0.7]*8, lod_cols=True)})
+for fmt in ["rgba8","rgba32f"]:
+    for mf in ["nearest_mipmap_nearest","linear_mipmap_linear"]:
+        tag=mf.replace('_mipmap_','-mip-').replace('_','-')
+        write(f"bias-{fmt}-{tag}",{"kind":"conformance",
+          "description":f"texture() with a per-pixel bias from -2 to 3 on a {fmt} 16x16 chain, min {mf}.",
+          "width":64,"height":64,"fragment":"sample_bias",
+          "uniforms":[{"name":"lod_min","float":-2.0},{"name":"lod_max","float":3.0}],
+          "textures":[{"sampler":"tex","format":fmt,"min_filter":mf,"mag_filter":"linear" if mf.startswith("linear") else "nearest","wrap":"repeat","width":16,"height":16,"pattern":"noise","seed":23,"mipmaps":"distinct"}],
+          "triangles":strips([0.5,1.0,2.0,3.0,0.7,1.4,4.0,8.0], lod_cols=True)})
+        write(f"grad-{fmt}-{tag}",{"kind":"conformance",
+          "description":f"textureGrad() with per-pixel scaled derivatives on a {fmt} 16x16 chain, min {mf}.",
+          "width":64,"height":64,"fragment":"sample_grad",
+          "uniforms":[{"name":"grad_scale","float":12.0}],
+          "textures":[{"sampler":"tex","format":fmt,"min_filter":mf,"mag_filter":"linear" if mf.startswith("linear") else "nearest","wrap":"repeat","width":16,"height":16,"pattern":"noise","seed":24,"mipmaps":"distinct"}],
+          "triangles":strips([0.5,1.0,2.0,3.0,0.7,1.4,4.0,8.0], lod_cols=True)})
+for fmt in ["rgba8","r32f","rgba16f"]:
+    write(f"texel-fetch-{fmt}",{"kind":"conformance",
+      "description":f"texelFetch() at levels -1 to 5 of a {fmt} 12x10 chain (4 levels), in and out of each level's bounds, and textureSize() of a per-pixel level.",
+      "width":64,"height":64,"fragment":"texel_fetch",
+      "textures":[{"sampler":"tex","format":fmt,"filter":"nearest","wrap":"repeat","width":12,"height":10,"pattern":"noise","seed":25,"mipmaps":"box"}],
+      "triangles":strips([1.0]*8, lod_cols=True)})
