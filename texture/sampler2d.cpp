@@ -18,156 +18,15 @@
 #include <cstring>
 
 #include "texture/texel_formats.h"
+#include "texture/lod_selection.h"
+#include "texture/texel_math.h"
 
 namespace st {
 
 namespace {
 
-using simd::fma;
-using simd::floor;
-using simd::iround;
-using simd::itrunc;
-using simd::IntV;
+using namespace texel;
 using Level = Sampler2D::LevelLanes;
-
-bool is_pot(int n) { return (n & (n - 1)) == 0; }
-
-// x86 maxps: a > b ? a : b, so a NaN in either operand gives b.
-ST_INLINE Float maxps(Float a, Float b) { return select(a > b, a, b); }
-
-// std::clamp(x, lo, hi) per lane: a NaN stays NaN.
-ST_INLINE Float clamp_like_std(Float x, Float lo, Float hi) { return select(x < lo, lo, select(hi < x, hi, x)); }
-
-// MIRRORED_REPEAT folds s into [0, 1] once, at the sample's centre
-// (lp_build_coord_mirror, posOnly): |2 (s/2 - rne(s/2))|, NaN -> 0.
-ST_INLINE Float mirror(Float s) {
-    const Float c = s * Float(0.5f);
-    const Float f = c - simd::to_float(iround(c));
-    return maxps(simd::abs(f + f), Float(0.0f));
-}
-
-// Float texel coordinates for linear filtering along one axis: the lower
-// texel i0, the upper i1 and the weight of i1 (wrap_linear in
-// lp_bld_sample_soa.c).
-struct LinearTaps {
-    Int i0, i1;
-    Float weight;
-};
-
-ST_INLINE LinearTaps linear_taps_float(Float s, Int size, Float size_f, bool pot, TextureWrap wrap) {
-    LinearTaps t;
-    const Int last = size - Int(1);
-    if (wrap == TextureWrap::ClampToEdge) {
-        Float u = s * size_f;
-        u = select(simd::isnan(u), size_f, select(size_f < u, size_f, u));  // min(u, size), NaN -> size
-        u = u - Float(0.5f);
-        u = select(u < Float(0.0f), Float(0.0f), u);
-        const Float fl = floor(u);
-        t.weight = u - fl;
-        t.i0 = itrunc(fl);
-        t.i1 = simd::min(t.i0 + Int(1), last);
-    } else if (wrap == TextureWrap::MirroredRepeat) {
-        const Float u = mirror(s) * size_f - Float(0.5f);
-        const Float fl = floor(u);
-        t.weight = u - fl;
-        t.i0 = simd::max(itrunc(fl), Int(0));
-        t.i1 = simd::min(itrunc(fl) + Int(1), last);
-    } else if (pot) {
-        const Float u = s * size_f - Float(0.5f);
-        const Float fl = floor(u);
-        t.weight = u - fl;
-        t.i0 = itrunc(fl) & last;
-        t.i1 = (itrunc(fl) + Int(1)) & last;
-    } else {
-        // Normalised repeat is fract(); the -0.5 then needs a fix-up below 0.
-        Float u = s - floor(s);
-        u = u * size_f - Float(0.5f);
-        const Float fl = floor(u);
-        t.weight = u - fl;
-        t.i0 = select(u < Float(0.0f), last, itrunc(fl));
-        t.i1 = select(t.i0 != last, t.i0 + Int(1), Int(0));
-    }
-    return t;
-}
-
-// The same in 8.8 fixed point for the AoS path: the weight is an integer
-// in [0, 255] (wrap_linear_int and repeat_npot_linear_int, §3.2).
-struct LinearTaps8 {
-    Int i0, i1, weight;
-};
-
-ST_INLINE LinearTaps8 linear_taps_fixed(Float s, Int size, Float size_f, bool pot, TextureWrap wrap) {
-    LinearTaps8 t;
-    const Int last = size - Int(1);
-    if (wrap == TextureWrap::Repeat && !pot) {
-        Float u = s - floor(s);
-        u = u * size_f;
-        const Int fixed = iround(u * Float(256.0f)) - Int(128);
-        t.weight = fixed & Int(255);
-        t.i0 = fixed >> 8;
-        t.i0 = select(t.i0 < Int(0), last, t.i0);
-        t.i0 = simd::min(t.i0, last);
-        t.i1 = select(t.i0 != last, t.i0 + Int(1), Int(0));
-        return t;
-    }
-    const Int fixed = iround(s * simd::to_float(size << 8)) - Int(128);
-    t.weight = fixed & Int(255);
-    const Int i0 = fixed >> 8;
-    if (wrap == TextureWrap::Repeat) {
-        t.i0 = i0 & last;
-        t.i1 = (i0 + Int(1)) & last;
-    } else {
-        t.i0 = simd::clamp(i0, Int(0), last);
-        t.i1 = simd::clamp(i0 + Int(1), Int(0), last);
-    }
-    return t;
-}
-
-// 8-bit lerp with an 8-bit weight, as pmulhrsw computes it in
-// lp_build_lerp_simple: ((w * (d << 7)) >> 14 + 1) >> 1, kept to 8 bits and
-// added to v0 modulo 256; here on two channels at once, one per 16-bit half
-// of each lane, with the weight in both halves (pmulhrsw itself where the
-// build has it).
-ST_INLINE Int lerp8_pairs(Int w, Int v0, Int v1) {
-    const Int rounded = simd::mulhrs16(w, simd::shl16(simd::sub16(v1, v0), 7));
-    return (v0 + (rounded & Int(0x00ff00ff))) & Int(0x00ff00ff);
-}
-
-// Float lerp: fma(t, v1 - v0, v0), as lp_build_mad fuses it.
-ST_INLINE Float lerp_float(Float t, Float v0, Float v1) { return fma(t, v1 - v0, v0); }
-
-// The nearest texel along one axis. The SoA and AoS paths differ only for
-// CLAMP_TO_EDGE beyond 2^31 texels (the AoS floor converts to INT32_MIN).
-ST_INLINE Int nearest_texel(Float s, Int size, Float size_f, bool pot, TextureWrap wrap, bool aos) {
-    const Int last = size - Int(1);
-    if (wrap == TextureWrap::ClampToEdge) {
-        const Float u = s * size_f;
-        if (aos) return simd::clamp(itrunc(floor(u)), Int(0), last);
-        // itrunc is enough: the clamp removes every negative.
-        const Int i = select(simd::isnan(u), Int(0), itrunc(clamp_like_std(u, Float(-1.0f), size_f)));
-        return simd::clamp(i, Int(0), last);
-    }
-    if (wrap == TextureWrap::MirroredRepeat) return simd::min(itrunc(mirror(s) * size_f), last);
-    if (pot) return itrunc(floor(s * size_f)) & last;
-    // fract_safe keeps the fraction below 1: minps(fraction, 1 - ulp), so a
-    // NaN coordinate gives the last texel.
-    const Float fraction = s - floor(s);
-    const Float f = select(fraction < Float(0x1.fffffep-1f), fraction, Float(0x1.fffffep-1f));
-    return itrunc(f * size_f);
-}
-
-// unorm8 to float: k * fl(1/255), one rounding (lp_bld_conv.c).
-ST_INLINE Float unorm8_to_float(Int k) { return simd::to_float(k) * Float(1.0f / 255.0f); }
-
-// The R and B bytes (rb) or G and A bytes (ga) of packed RGBA8 texels, one
-// per 16-bit half.
-ST_INLINE Int red_blue(Int t) { return t & Int(0x00ff00ff); }
-ST_INLINE Int green_alpha(Int t) { return (t >> 8) & Int(0x00ff00ff); }
-
-ST_INLINE Vec4 unpack_pairs(Int rb, Int ga) {
-    return Vec4(unorm8_to_float(rb & Int(0xff)), unorm8_to_float(ga & Int(0xff)), unorm8_to_float(rb >> 16),
-                unorm8_to_float(ga >> 16));
-}
 
 // When every lane's four taps lie within kLanes texels of a row and
 // kWindowRows rows (a magnified or unscaled texture, where neighbouring
@@ -238,39 +97,9 @@ bool fetch_window(const int32_t* rgba8, int width, const LinearTaps8& u, const L
     return true;
 }
 
-// Lane indices of the top-left, top-right and bottom-left lane of each
-// lane's quad: the lanes llvmpipe takes a quad's derivatives from (§2.2).
-#define ST_QUAD(q, a) 4 * q + a, 4 * q + a, 4 * q + a, 4 * q + a
-#if ST_LANES == 8
-#define ST_QUAD_LANES(a) {ST_QUAD(0, a), ST_QUAD(1, a)}
-#else
-#define ST_QUAD_LANES(a) {ST_QUAD(0, a), ST_QUAD(1, a), ST_QUAD(2, a), ST_QUAD(3, a)}
-#endif
-constexpr IntV kQuadTL = ST_QUAD_LANES(0), kQuadTR = ST_QUAD_LANES(1), kQuadBL = ST_QUAD_LANES(2);
-#undef ST_QUAD_LANES
-#undef ST_QUAD
-
-// Lane bits of 8-lane groups where some lane of the group is in m.
-ST_INLINE Mask any_in_group(Mask m) {
-    const unsigned b = bits(m);
-    unsigned out = 0;
-    for (int g = 0; g < kLanes / 8; ++g)
-        if (b >> (8 * g) & 0xffu) out |= 0xffu << (8 * g);
-    return Mask::from_bits(out);
-}
-
 glm::vec4 lane0(const Vec4& v) { return glm::vec4(v.x[0], v.y[0], v.z[0], v.w[0]); }
 
 }  // namespace
-
-// The levels one sample reads and how it weighs them (§2.6), and whether
-// it is minified (§2.7).
-struct Sampler2D::LevelChoice {
-    Int level0, level1;
-    Float fpart;  // weight of level1; 0 where only level0 counts
-    Mask minified;
-    bool two_levels = false;
-};
 
 Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
     last_level_ = int(texture.mips.size());
@@ -442,39 +271,6 @@ void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFi
     ga = pairs([](Int t) { return green_alpha(t); });
 }
 
-// The LOD selector (§2.4) and level selection (§2.6) for min == mag, GL's
-// default sampler state (no bias, MIN_LOD 0, MAX_LOD 1000). `lod` is
-// log2(rho) for an implicit LOD (the caller has applied 0.5 * fast_log2 or
-// the shortcut) or the shader's value for textureLod.
-Sampler2D::LevelChoice Sampler2D::choose_levels(Float lod) const {
-    LevelChoice c;
-    const Int last(last_level_);
-    c.minified = !(lod <= Float(0.0f));  // unordered: a NaN LOD minifies
-    if (mip_filter_ == MipFilter::None) {
-        c.level0 = c.level1 = Int(0);
-        c.fpart = Float(0.0f);
-    } else if (mip_filter_ == MipFilter::Linear) {
-        const Float fl = floor(lod);
-        Float fpart = lod - fl;
-        Int l0 = itrunc(fl);
-        // Below the base or at or past the last level only one level counts.
-        const Mask below = l0 < Int(0);
-        l0 = select(below, Int(0), l0);
-        fpart = select(below, Float(0.0f), fpart);
-        const Mask top = !(l0 < last);
-        l0 = select(top, last, l0);
-        fpart = select(top, Float(0.0f), fpart);
-        c.level0 = l0;
-        c.level1 = select(top, last, l0 + Int(1));
-        c.fpart = fpart;
-        c.two_levels = true;
-    } else {
-        c.level0 = c.level1 = simd::clamp(iround(lod), Int(0), last);
-        c.fpart = Float(0.0f);
-    }
-    return c;
-}
-
 // min == mag: the one filter at the chosen levels.
 Vec4 Sampler2D::filter_levels(const Vec2& st, const LevelChoice& c, TextureFilter filter, bool aos) const {
     const LevelLanes l0 = level_lanes(c.level0);
@@ -575,43 +371,20 @@ Float Sampler2D::quad_rho2(const Vec2& st) const {
     return maxps(a + c, b + d);
 }
 
-// 0.5 * fast_log2(rho^2): (E - 128) + the mantissa in [1, 2), one rounded
-// add, then halved (§2.4).
-ST_INLINE Float half_fast_log2(Float rho2) {
-    const Int bits = simd::bit_cast_int(rho2);
-    const Float mantissa = simd::bit_cast_float((bits & Int(0x7fffff)) | Int(0x3f800000));
-    return (simd::to_float(((bits >> 23) & Int(255)) - Int(128)) + mantissa) * Float(0.5f);
-}
-
-// The selector for rho^2 without a shader bias (texture(), textureGrad):
-// GL's default state takes the exponent shortcut for NEAREST and NONE mip
-// filters, round_half_up(log2 rho), and minifies where rho^2 > 1
-// (unordered); LINEAR goes through 0.5 * fast_log2 (§2.4).
-Sampler2D::LevelChoice Sampler2D::choose_from_rho2(Float rho2) const {
-    if (mip_filter_ == MipFilter::Linear) return choose_levels(half_fast_log2(rho2));
-    LevelChoice c;
-    const Int exponent = (simd::bit_cast_int(rho2) >> 23) & Int(255);
-    const Int ipart = (exponent - Int(126)) >> 1;
-    c.level0 = c.level1 = mip_filter_ == MipFilter::None ? Int(0) : simd::clamp(ipart, Int(0), Int(last_level_));
-    c.fpart = Float(0.0f);
-    c.minified = !(rho2 <= Float(1.0f));
-    return c;
-}
-
 Vec4 Sampler2D::sample(const Vec2& st) const {
     if (!needs_lod()) return sample_base(st);
-    return sample_levels(st, choose_from_rho2(quad_rho2(st)), true);
+    return sample_levels(st, choose_from_rho2(quad_rho2(st), mip_filter_, last_level_), true);
 }
 
 Vec4 Sampler2D::sample_bias(const Vec2& st, Float bias) const {
     if (!needs_lod()) return sample_base(st);
     // The quad's LOD plus each lane's bias: no shortcut (§2.4 step 3).
-    return sample_levels(st, choose_levels(half_fast_log2(quad_rho2(st)) + bias), false);
+    return sample_levels(st, choose_levels(half_fast_log2(quad_rho2(st)) + bias, mip_filter_, last_level_), false);
 }
 
 Vec4 Sampler2D::sample_lod(const Vec2& st, Float lod) const {
     if (!needs_lod()) return sample_base(st);
-    return sample_levels(st, choose_levels(lod), false);
+    return sample_levels(st, choose_levels(lod, mip_filter_, last_level_), false);
 }
 
 Vec4 Sampler2D::sample_grad(const Vec2& st, const Vec2& dx, const Vec2& dy) const {
@@ -624,7 +397,7 @@ Vec4 Sampler2D::sample_grad(const Vec2& st, const Vec2& dx, const Vec2& dy) cons
     Float rho2 = maxps(a + c, b + d);
     const Mask special = (simd::bit_cast_int(rho2) & Int(0x7f800000)) == Int(0x7f800000);
     rho2 = select(special, Float(0.0f), rho2);
-    return sample_levels(st, choose_from_rho2(rho2), false);
+    return sample_levels(st, choose_from_rho2(rho2, mip_filter_, last_level_), false);
 }
 
 Int Sampler2D::size_x(Int lod) const { return texture_size(lod, true); }

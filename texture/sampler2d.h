@@ -16,6 +16,10 @@
 
 namespace st {
 
+namespace texel {
+struct LevelChoice;
+}
+
 class Sampler2D {
 public:
     explicit Sampler2D(const Texture& texture);
@@ -56,13 +60,11 @@ public:
     };
 
 private:
-    struct LevelChoice;
+    using LevelChoice = texel::LevelChoice;
     LevelLanes level_lanes(Int level) const;
     bool needs_lod() const;
     Vec4 sample_base(const Vec2& st) const;
     Float quad_rho2(const Vec2& st) const;
-    LevelChoice choose_levels(Float lod) const;
-    LevelChoice choose_from_rho2(Float rho2) const;
     Vec4 sample_levels(const Vec2& st, const LevelChoice& choice, bool per_quad_lod) const;
     Vec4 filter_levels(const Vec2& st, const LevelChoice& choice, TextureFilter filter, bool aos) const;
     Vec4 blend_second_level(const Vec2& st, const LevelChoice& choice, TextureFilter filter, Mask as_nearest,
