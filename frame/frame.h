@@ -51,10 +51,12 @@ struct TextureLevel {
     std::vector<float> texels32;    // the float formats, RGBA
 };
 
-// A 2D texture. Level 0 is width x height with texels8 (RGBA8: k/255
-// exactly as uploaded) or texels32 (RGBA floats); `mips` holds levels 1..N,
-// generated on the host (texture/mip_generation.h) and uploaded level by
-// level, so neither backend depends on glGenerateMipmap.
+// A 2D texture or a cube map. Level 0 is width x height with texels8
+// (RGBA8: k/255 exactly as uploaded) or texels32 (RGBA floats); `mips`
+// holds levels 1..N, generated on the host (texture/mip_generation.h) and
+// uploaded level by level, so neither backend depends on glGenerateMipmap.
+// A cube map's levels hold its six square faces one after the other, in
+// GL's order +X, -X, +Y, -Y, +Z, -Z; it is sampled with seamless filtering.
 struct Texture {
     std::string sampler;  // GLSL sampler uniform name
     TextureFormat format = TextureFormat::RGBA32F;
@@ -66,8 +68,10 @@ struct Texture {
     std::vector<uint8_t> texels8;   // RGBA8: width*height*4, row 0 = t near 0
     std::vector<float> texels32;    // float formats: width*height*4
     std::vector<TextureLevel> mips;
+    bool cube = false;
 
     int level_count() const { return 1 + int(mips.size()); }
+    int faces() const { return cube ? 6 : 1; }
     // One filter for both (the textures of the thin-slab and triangle scenes).
     void set_filter(TextureFilter f) { mag_filter = min_filter = f; }
     void set_wrap(TextureWrap w) { wrap_s = wrap_t = w; }

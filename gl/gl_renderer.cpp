@@ -121,22 +121,33 @@ GLenum gl_internal_format(TextureFormat f) {
 
 // Level by level, from the host's texels: RGBA8 as bytes, the float formats
 // as RGBA floats that GL converts to the storage format (texel_formats.h).
+GLenum gl_target(const Texture& tex) { return tex.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D; }
+
+// Level by level and face by face, from the host's texels: RGBA8 as bytes,
+// the float formats as RGBA floats that GL converts to the storage format
+// (texture/texel_formats.h), into the texture bound to gl_target(tex).
 void upload_texture(const Texture& tex) {
-    glTexStorage2D(GL_TEXTURE_2D, tex.level_count(), gl_internal_format(tex.format), tex.width, tex.height);
+    const GLenum target = gl_target(tex);
+    glTexStorage2D(target, tex.level_count(), gl_internal_format(tex.format), tex.width, tex.height);
     for (int level = 0; level < tex.level_count(); ++level) {
         const TextureLevel* l = level ? &tex.mips[size_t(level - 1)] : nullptr;
         const int w = l ? l->width : tex.width, h = l ? l->height : tex.height;
-        if (tex.format == TextureFormat::RGBA8)
-            glTexSubImage2D(GL_TEXTURE_2D, level, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE,
-                            l ? l->texels8.data() : tex.texels8.data());
-        else
-            glTexSubImage2D(GL_TEXTURE_2D, level, 0, 0, w, h, GL_RGBA, GL_FLOAT,
-                            l ? l->texels32.data() : tex.texels32.data());
+        const size_t face_values = size_t(w) * size_t(h) * 4;
+        for (int face = 0; face < tex.faces(); ++face) {
+            const GLenum image = tex.cube ? GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face) : GL_TEXTURE_2D;
+            const size_t at = size_t(face) * face_values;
+            if (tex.format == TextureFormat::RGBA8)
+                glTexSubImage2D(image, level, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE,
+                                (l ? l->texels8.data() : tex.texels8.data()) + at);
+            else
+                glTexSubImage2D(image, level, 0, 0, w, h, GL_RGBA, GL_FLOAT,
+                                (l ? l->texels32.data() : tex.texels32.data()) + at);
+        }
     }
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, gl_min_filter(tex.min_filter, tex.mip_filter));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, gl_mag_filter(tex.mag_filter));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap_s));
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap_t));
+    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, gl_min_filter(tex.min_filter, tex.mip_filter));
+    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, gl_mag_filter(tex.mag_filter));
+    glTexParameteri(target, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap_s));
+    glTexParameteri(target, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap_t));
 }
 
 void set_uniform(GLuint program, const Uniform& u) {
@@ -160,6 +171,7 @@ struct GlRenderer::State {
         GLuint program = 0, vao = 0, vbo = 0, ebo = 0;
         GLsizei index_count = 0;
         std::vector<GLuint> textures;
+        std::vector<GLenum> texture_targets;  // GL_TEXTURE_2D or GL_TEXTURE_CUBE_MAP, per unit
         DrawState state;
         std::shared_ptr<const HostStage> host_stage;
         VertexArray vertices;  // kept only when a host stage rewrites them per frame
@@ -205,6 +217,8 @@ std::string GlRenderer::version() const { return context_->version(); }
 void GlRenderer::prepare(const Frame& frame) {
     context_->make_current();
     state_->release_passes();
+    // Cube maps filter across their faces, as real renderers set them.
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     for (const Pass& pass : frame.passes) {
         State::Target t;
         t.width = pass.width;
@@ -265,12 +279,13 @@ void GlRenderer::prepare(const Frame& frame) {
                 const Texture& tex = dc.textures[unit];
                 GLuint name = 0;
                 glGenTextures(1, &name);
-                glBindTexture(GL_TEXTURE_2D, name);
+                glBindTexture(gl_target(tex), name);
                 glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
                 upload_texture(tex);
                 const GLint loc = glGetUniformLocation(d.program, tex.sampler.c_str());
                 if (loc >= 0) glUniform1i(loc, GLint(unit));
                 d.textures.push_back(name);
+                d.texture_targets.push_back(gl_target(tex));
             }
             t.draws.push_back(std::move(d));
         }
@@ -320,7 +335,7 @@ void GlRenderer::execute() {
             glUseProgram(d.program);
             for (size_t unit = 0; unit < d.textures.size(); ++unit) {
                 glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-                glBindTexture(GL_TEXTURE_2D, d.textures[unit]);
+                glBindTexture(d.texture_targets[unit], d.textures[unit]);
             }
             glBindVertexArray(d.vao);
             glDrawElements(GL_TRIANGLES, d.index_count, GL_UNSIGNED_INT, nullptr);

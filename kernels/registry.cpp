@@ -51,6 +51,8 @@ const std::map<std::string, Factory<FragmentTwin>>& fragment_twins() {
         {"sample_bias", [] { return std::make_unique<SampleBiasFragment>(); }},
         {"sample_grad", [] { return std::make_unique<SampleGradFragment>(); }},
         {"texel_fetch", [] { return std::make_unique<TexelFetchFragment>(); }},
+        {"sample_cube", [] { return std::make_unique<SampleCubeFragment>(); }},
+        {"sample_cube_lod", [] { return std::make_unique<SampleCubeLodFragment>(); }},
     };
     return twins;
 }

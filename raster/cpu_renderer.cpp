@@ -63,8 +63,13 @@ void CpuRenderer::prepare(const Frame& frame) {
                 throw std::runtime_error("no C++ twin for fragment program '" + call.fragment + "'");
             d.bindings.uniforms = &call.uniforms;
             for (const Texture& t : call.textures) {
-                d.bindings.samplers.push_back(&d.samplers.emplace_back(t));
-                d.bindings.sampler_names.push_back(t.sampler);
+                if (t.cube) {
+                    d.bindings.cube_samplers.push_back(&d.cube_samplers.emplace_back(t));
+                    d.bindings.cube_sampler_names.push_back(t.sampler);
+                } else {
+                    d.bindings.samplers.push_back(&d.samplers.emplace_back(t));
+                    d.bindings.sampler_names.push_back(t.sampler);
+                }
             }
             d.vertex->bind(d.bindings);
             d.fragment->bind(d.bindings);

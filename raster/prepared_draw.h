@@ -11,6 +11,7 @@
 #include "raster/viewport.h"
 #include "shading/program.h"
 #include "texture/sampler2d.h"
+#include "texture/sampler_cube.h"
 
 namespace st {
 
@@ -20,6 +21,7 @@ struct PreparedDraw {
     std::unique_ptr<VertexTwin> vertex;
     std::unique_ptr<FragmentTwin> fragment;
     std::deque<Sampler2D> samplers;       // deque: Bindings keeps pointers
+    std::deque<SamplerCube> cube_samplers;
     Bindings bindings;
     int varying_count = 0;
     uint32_t inputs_read = ~0u;           // fragment->inputs_read()

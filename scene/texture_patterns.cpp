@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "scene/input_error.h"
 #include "texture/mip_generation.h"
 
 namespace st {
@@ -36,6 +37,18 @@ void fill(int width, int height, TextureFormat format, bool checker, uint32_t se
                 if (format == TextureFormat::RGBA8) texels8[i] = uint8_t(h >> 24);
                 else texels32[i] = float(h >> 8) * (1.0f / 16777216.0f);  // 24 bits: exact
             }
+}
+
+// Every face of a level (one for a 2D texture), each face seeded apart.
+void fill_faces(const Texture& t, int width, int height, bool checker, uint32_t seed, std::vector<uint8_t>& texels8,
+                std::vector<float>& texels32) {
+    std::vector<uint8_t> face8;
+    std::vector<float> face32;
+    for (int face = 0; face < t.faces(); ++face) {
+        fill(width, height, t.format, checker, seed + uint32_t(face) * 101u, face8, face32);
+        texels8.insert(texels8.end(), face8.begin(), face8.end());
+        texels32.insert(texels32.end(), face32.begin(), face32.end());
+    }
 }
 
 TextureWrap wrap_named(const std::string& name) {
@@ -77,9 +90,16 @@ Texture read_pattern_texture(JsonReader& r, const std::string& sampler) {
     t.mip_filter = mip_filter_named(min);
     t.width = r.integer("width", 1, 4096);
     t.height = r.integer("height", 1, 4096);
+    t.cube = r.boolean_or("cube", false);
+    if (t.cube && t.width != t.height)
+        throw InputError("field '" + r.field("height") + "': a cube map's faces must be square (width " +
+                         std::to_string(t.width) + ", height " + std::to_string(t.height) + ")");
+    if (t.cube && t.min_filter != t.mag_filter)
+        throw InputError("field '" + r.field("mag_filter") +
+                         "': a cube map needs the same min and mag filter (the switch is not modelled)");
     const bool checker = r.choice_or("pattern", "noise", {"checker", "noise"}) == "checker";
     const auto seed = uint32_t(r.integer_or("seed", 1, 0, 1 << 30));
-    fill(t.width, t.height, t.format, checker, seed, t.texels8, t.texels32);
+    fill_faces(t, t.width, t.height, checker, seed, t.texels8, t.texels32);
 
     // Mip levels: none, a box filter of level 0 ("box"), or each level its
     // own pattern ("distinct", seeded per level), which shows in every texel
@@ -93,7 +113,7 @@ Texture read_pattern_texture(JsonReader& r, const std::string& sampler) {
             TextureLevel l;
             l.width = std::max(1, t.width >> level);
             l.height = std::max(1, t.height >> level);
-            fill(l.width, l.height, t.format, checker, seed + uint32_t(level) * 7919u, l.texels8, l.texels32);
+            fill_faces(t, l.width, l.height, checker, seed + uint32_t(level) * 7919u, l.texels8, l.texels32);
             t.mips.push_back(std::move(l));
         }
     r.finish();

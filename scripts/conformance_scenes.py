@@ -138,3 +138,38 @@ for fmt in ["rgba8","r32f","rgba16f"]:
       "width":64,"height":64,"fragment":"texel_fetch",
       "textures":[{"sampler":"tex","format":fmt,"filter":"nearest","wrap":"repeat","width":12,"height":10,"pattern":"noise","seed":25,"mipmaps":"box"}],
       "triangles":strips([1.0]*8, lod_cols=True)})
+
+# Cube maps: four quads, each sweeping the direction (u, v, 2b - 1) over a
+# different range, so that every face, edge and corner is crossed, magnified
+# (the first quads) and minified (the wide ranges).
+def cube_quads(lod_cols=False):
+    tris = []
+    ranges = [(-1.3, 1.3, 0.0, 1.0), (-3.0, 3.0, 0.2, 0.8), (-0.9, 1.6, 1.0, 0.0), (-12.0, 12.0, 0.0, 1.0)]
+    for q, (lo, hi, b0, b1) in enumerate(ranges):
+        x0, y0 = (q % 2) * 32 + 0.5, (q // 2) * 32 + 0.5
+        x1, y1 = x0 + 31.0, y0 + 31.0
+        P = [[x0, y0], [x1, y0 + 0.75], [x1 - 0.5, y1], [x0 + 0.25, y1 - 0.5]]
+        U = [[lo, lo], [hi, lo * 0.9], [hi, hi], [lo * 1.1, hi]]
+        C = [[0.0, 0, b0, 1], [0.3, 0, b1, 1], [1.0, 0, b1, 1], [0.7, 0, b0, 1]] if lod_cols else \
+            [[1, 1, b0, 1], [1, 1, b1, 1], [1, 1, b1, 1], [1, 1, b0, 1]]
+        for a, b, c in ((0, 1, 2), (0, 2, 3)):
+            tris.append({"positions": [P[a], P[b], P[c]], "colours": [C[a], C[b], C[c]], "uvs": [U[a], U[b], U[c]]})
+    return tris
+
+for fmt in ["rgba8", "rgba32f"]:
+    for mf in ["linear", "nearest", "linear_mipmap_linear", "nearest_mipmap_nearest", "nearest_mipmap_linear"]:
+        mag = "linear" if mf.startswith("linear") else "nearest"
+        tag = mf.replace("_mipmap_", "-mip-").replace("_", "-")
+        write(f"cube-{fmt}-{tag}", {"kind": "conformance",
+          "description": f"texture() on a seamless {fmt} cube map (8x8 faces, distinct levels), min {mf}: every face, edge and corner, magnified and minified.",
+          "width": 64, "height": 64, "fragment": "sample_cube",
+          "textures": [{"sampler": "env", "cube": True, "format": fmt, "min_filter": mf, "mag_filter": mag, "wrap": "clamp",
+                        "width": 8, "height": 8, "pattern": "noise", "seed": 31, "mipmaps": "distinct"}],
+          "triangles": cube_quads()})
+    write(f"cube-lod-{fmt}", {"kind": "conformance",
+      "description": f"textureLod() from -1 to 4 on a seamless {fmt} cube map (8x8 faces, distinct levels), linear_mipmap_linear.",
+      "width": 64, "height": 64, "fragment": "sample_cube_lod",
+      "uniforms": [{"name": "lod_min", "float": -1.0}, {"name": "lod_max", "float": 4.0}],
+      "textures": [{"sampler": "env", "cube": True, "format": fmt, "min_filter": "linear_mipmap_linear", "mag_filter": "linear",
+                    "wrap": "clamp", "width": 8, "height": 8, "pattern": "noise", "seed": 32, "mipmaps": "distinct"}],
+      "triangles": cube_quads(lod_cols=True)})

@@ -56,4 +56,10 @@ const Sampler2D& Bindings::sampler(const std::string& name) const {
     throw std::runtime_error("sampler '" + name + "' is not bound");
 }
 
+const SamplerCube& Bindings::sampler_cube(const std::string& name) const {
+    for (size_t i = 0; i < cube_sampler_names.size(); ++i)
+        if (cube_sampler_names[i] == name) return *cube_samplers[i];
+    throw std::runtime_error("samplerCube '" + name + "' is not bound");
+}
+
 }  // namespace st

@@ -27,6 +27,7 @@
 namespace st {
 
 class Sampler2D;
+class SamplerCube;
 
 inline constexpr int kMaxVaryings = 8;
 
@@ -41,6 +42,8 @@ struct Bindings {
     const std::vector<Uniform>* uniforms = nullptr;
     std::vector<const Sampler2D*> samplers;
     std::vector<std::string> sampler_names;
+    std::vector<const SamplerCube*> cube_samplers;
+    std::vector<std::string> cube_sampler_names;
 
     // Throws std::runtime_error naming the uniform when it is absent or of
     // another type, so a scene that forgets one fails loudly.
@@ -51,6 +54,7 @@ struct Bindings {
     glm::vec4 get_vec4(const std::string& name) const;
     glm::mat4 get_mat4(const std::string& name) const;
     const Sampler2D& sampler(const std::string& name) const;
+    const SamplerCube& sampler_cube(const std::string& name) const;
 };
 
 class VertexTwin {

@@ -144,6 +144,7 @@ ST_INLINE Int operator*(Int a, Int b) {
 }
 ST_INLINE Int operator&(Int a, Int b) { return Int(a.v & b.v); }
 ST_INLINE Int operator|(Int a, Int b) { return Int(a.v | b.v); }
+ST_INLINE Int operator^(Int a, Int b) { return Int(a.v ^ b.v); }
 ST_INLINE Int operator<<(Int a, int n) {
     using UV = uint32_t __attribute__((vector_size(kLanes * 4)));
     return Int(IntV(UV(a.v) << n));

@@ -16,9 +16,9 @@ int full_chain_levels(int width, int height) {
 
 namespace {
 
-// Level-0 texels as doubles, RGBA.
+// Level-0 texels as doubles, RGBA, every face.
 std::vector<double> base_texels(const Texture& t) {
-    const size_t n = size_t(t.width) * size_t(t.height) * 4;
+    const size_t n = size_t(t.width) * size_t(t.height) * 4 * size_t(t.faces());
     std::vector<double> out(n);
     for (size_t i = 0; i < n; ++i)
         out[i] = t.format == TextureFormat::RGBA8 ? t.texels8[i] / 255.0 : double(t.texels32[i]);
@@ -37,6 +37,31 @@ std::vector<std::pair<int, double>> footprint(int x, int n, int base) {
     return taps;
 }
 
+// One face of level l from the same face of level 0 (`base`, doubles).
+void box_face(const Texture& t, const std::vector<double>& base, int face, TextureLevel& l) {
+    const size_t base_face = size_t(face) * size_t(t.height) * size_t(t.width);
+    const size_t level_face = size_t(face) * size_t(l.height) * size_t(l.width);
+    for (int y = 0; y < l.height; ++y) {
+        const auto ty = footprint(y, l.height, t.height);
+        for (int x = 0; x < l.width; ++x) {
+            const auto tx = footprint(x, l.width, t.width);
+            double sum[4] = {0, 0, 0, 0};
+            for (const auto& [j, wy] : ty)
+                for (const auto& [i, wx] : tx) {
+                    const double* texel = &base[(base_face + size_t(j) * size_t(t.width) + size_t(i)) * 4];
+                    for (int c = 0; c < 4; ++c) sum[c] += wx * wy * texel[c];
+                }
+            const size_t o = (level_face + size_t(y) * size_t(l.width) + size_t(x)) * 4;
+            for (int c = 0; c < 4; ++c) {
+                if (t.format == TextureFormat::RGBA8)
+                    l.texels8[o + size_t(c)] = uint8_t(std::lround(std::clamp(sum[c], 0.0, 1.0) * 255.0));
+                else
+                    l.texels32[o + size_t(c)] = float(sum[c]);
+            }
+        }
+    }
+}
+
 }  // namespace
 
 void generate_box_mips(Texture& t, int levels) {
@@ -46,27 +71,10 @@ void generate_box_mips(Texture& t, int levels) {
         TextureLevel l;
         l.width = std::max(1, t.width >> level);
         l.height = std::max(1, t.height >> level);
-        const size_t n = size_t(l.width) * size_t(l.height) * 4;
+        const size_t n = size_t(l.width) * size_t(l.height) * 4 * size_t(t.faces());
         if (t.format == TextureFormat::RGBA8) l.texels8.resize(n);
         else l.texels32.resize(n);
-        for (int y = 0; y < l.height; ++y) {
-            const auto ty = footprint(y, l.height, t.height);
-            for (int x = 0; x < l.width; ++x) {
-                const auto tx = footprint(x, l.width, t.width);
-                double sum[4] = {0, 0, 0, 0};
-                for (const auto& [j, wy] : ty)
-                    for (const auto& [i, wx] : tx)
-                        for (int c = 0; c < 4; ++c)
-                            sum[c] += wx * wy * base[(size_t(j) * size_t(t.width) + size_t(i)) * 4 + size_t(c)];
-                const size_t o = (size_t(y) * size_t(l.width) + size_t(x)) * 4;
-                for (int c = 0; c < 4; ++c) {
-                    if (t.format == TextureFormat::RGBA8)
-                        l.texels8[o + size_t(c)] = uint8_t(std::lround(std::clamp(sum[c], 0.0, 1.0) * 255.0));
-                    else
-                        l.texels32[o + size_t(c)] = float(sum[c]);
-                }
-            }
-        }
+        for (int face = 0; face < t.faces(); ++face) box_face(t, base, face, l);
         t.mips.push_back(std::move(l));
     }
 }
@@ -76,7 +84,7 @@ bool mip_sizes_valid(const Texture& t, std::string& why) {
         const int level = int(i) + 1;
         const int w = std::max(1, t.width >> level), h = std::max(1, t.height >> level);
         const TextureLevel& l = t.mips[i];
-        const size_t n = size_t(w) * size_t(h) * 4;
+        const size_t n = size_t(w) * size_t(h) * 4 * size_t(t.faces());
         const size_t have = t.format == TextureFormat::RGBA8 ? l.texels8.size() : l.texels32.size();
         if (l.width != w || l.height != h || have != n) {
             why = "level " + std::to_string(level) + " is " + std::to_string(l.width) + "x" +

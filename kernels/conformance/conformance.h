@@ -11,6 +11,7 @@
 namespace st {
 
 class Sampler2D;
+class SamplerCube;
 
 class LoopExitFragment final : public FragmentProgram<LoopExitFragment> {  // loop_exit.frag
 public:
@@ -132,6 +133,27 @@ public:
 
 private:
     const Sampler2D* tex_ = nullptr;
+};
+
+class SampleCubeFragment final : public FragmentProgram<SampleCubeFragment> {  // sample_cube.frag
+public:
+    void bind(const Bindings& b) override { env_ = &b.sampler_cube("env"); }
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    const SamplerCube* env_ = nullptr;
+};
+
+class SampleCubeLodFragment final : public FragmentProgram<SampleCubeLodFragment> {  // sample_cube_lod.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    const SamplerCube* env_ = nullptr;
+    float lod_min_ = 0.0f, lod_max_ = 0.0f;
 };
 
 }  // namespace st
