@@ -26,6 +26,18 @@ GlRenderer& Backends::gl() {
 std::string Backends::gl_renderer() { return gl().renderer(); }
 std::string Backends::gl_version() { return gl().version(); }
 
+namespace {
+
+template <class Renderer>
+void read_outputs(Renderer& r, const Frame& frame, Rendered& out) {
+    out.image = r.read_back();
+    for (const RenderTarget& t : frame.targets)
+        for (int level = 0; level < t.levels; ++level)
+            out.outputs.push_back({t.name + (level ? "@" + std::to_string(level) : ""), r.read_back(t.name, level)});
+}
+
+}  // namespace
+
 Rendered Backends::render(Backend backend, const Frame& frame) {
     Rendered out;
     if (backend == Backend::Cpu) {
@@ -35,14 +47,14 @@ Rendered Backends::render(Backend backend, const Frame& frame) {
         r.execute();
         out.ms = ms_between(t0, Clock::now());
         out.stages = r.stage_times();
-        out.image = r.read_back();
+        read_outputs(r, frame, out);
     } else {
         GlRenderer& r = gl();
         r.prepare(frame);
         const auto t0 = Clock::now();
         r.execute();
         out.ms = ms_between(t0, Clock::now());
-        out.image = r.read_back();
+        read_outputs(r, frame, out);
     }
     return out;
 }

@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "frame/frame.h"
 #include "image/image.h"
@@ -19,8 +20,16 @@ class GlRenderer;
 enum class Backend { Cpu, Gl };
 const char* backend_name(Backend b);
 
+// One named output of a frame besides its image: a render target's level,
+// named "<target>" for level 0 and "<target>@<level>" for the others.
+struct NamedImage {
+    std::string name;
+    Image image;
+};
+
 struct Rendered {
     Image image;
+    std::vector<NamedImage> outputs;  // every level of every named target
     double ms = 0;            // the frame's work, without preparation or read-back
     StageTimes stages;        // CPU backend only
 };

@@ -34,27 +34,32 @@ int cmd_golden(const std::string& action, const std::vector<std::string>& names_
     Backends backends(common.threads, glsl_dir());
     std::vector<std::string> changed;
     for (const Scene& scene : scenes) {
-        const std::string hash = pixel_hash(backends.render(Backend::Cpu, scene.frame).image);
-        const bool known = golden.contains(scene.name);
-        if (action == "update") {
-            if (!known || golden[scene.name] != hash) changed.push_back(scene.name);
-            golden[scene.name] = hash;
-            continue;
-        }
-        if (!known) {
-            std::cout << scene.name << " no golden (run golden update " << scene.name << ")\n";
-            changed.push_back(scene.name);
-        } else if (golden[scene.name] != hash) {
-            std::cout << scene.name << " changed: golden " << golden[scene.name].get<std::string>()
-                      << " now " << hash << "\n";
-            changed.push_back(scene.name);
-        } else {
-            std::cout << scene.name << " ok\n";
+        // The image under the scene's name, each named output under
+        // "<scene>:<output>".
+        const Rendered r = backends.render(Backend::Cpu, scene.frame);
+        std::vector<std::pair<std::string, std::string>> hashes = {{scene.name, pixel_hash(r.image)}};
+        for (const NamedImage& o : r.outputs) hashes.push_back({scene.name + ":" + o.name, pixel_hash(o.image)});
+        for (const auto& [key, hash] : hashes) {
+            const bool known = golden.contains(key);
+            if (action == "update") {
+                if (!known || golden[key] != hash) changed.push_back(key);
+                golden[key] = hash;
+                continue;
+            }
+            if (!known) {
+                std::cout << key << " no golden (run golden update " << scene.name << ")\n";
+                changed.push_back(key);
+            } else if (golden[key] != hash) {
+                std::cout << key << " changed: golden " << golden[key].get<std::string>() << " now " << hash << "\n";
+                changed.push_back(key);
+            } else {
+                std::cout << key << " ok\n";
+            }
         }
     }
     if (action == "update") {
         write_text_file(golden_file(), golden.dump(2) + "\n");
-        std::cout << "updated " << changed.size() << " of " << scenes.size() << " golden hashes\n";
+        std::cout << "updated " << changed.size() << " golden hashes (" << scenes.size() << " scenes)\n";
         return 0;
     }
     if (!changed.empty()) {

@@ -42,6 +42,13 @@ void print_human(const SceneComparison& c) {
               << "  identical_float " << c.metrics.identical_fraction_float << "  max_rel_diff_float "
               << c.metrics.max_rel_diff_float << "\n";
     for (const auto& f : c.failures) std::cout << "    " << f << "\n";
+    for (const auto& o : c.outputs) {
+        std::cout << "  " << std::left << std::setw(26) << o.name << (o.failures.empty() ? " pass" : " FAIL")
+                  << "  identical_8bit " << o.metrics.identical_fraction_8bit << "  max_diff_8bit "
+                  << o.metrics.max_diff_8bit << "  identical_float " << o.metrics.identical_fraction_float
+                  << "  max_rel_diff_float " << o.metrics.max_rel_diff_float << "\n";
+        for (const auto& f : o.failures) std::cout << "      " << f << "\n";
+    }
 }
 
 }  // namespace
@@ -75,6 +82,12 @@ int cmd_render(const std::vector<std::string>& names, const std::string& backend
         nlohmann::json j = {{"scene", scene.name},  {"backend", backend_name(backend)},
                             {"width", r.image.width}, {"height", r.image.height},
                             {"hash", pixel_hash(r.image)}, {"ms", r.ms}};
+        j["outputs"] = nlohmann::json::array();
+        for (const NamedImage& o : r.outputs) {
+            write_rendered(out_dir, scene.name + "." + o.name, backend, o.image, backends);
+            j["outputs"].push_back({{"name", o.name}, {"width", o.image.width}, {"height", o.image.height},
+                                    {"hash", pixel_hash(o.image)}});
+        }
         if (backend == Backend::Cpu)
             j["stages"] = {{"vertex", r.stages.vertex_ms},       {"setup_binning", r.stages.setup_ms},
                            {"rasterization", r.stages.raster_ms}, {"fragment", r.stages.fragment_ms},

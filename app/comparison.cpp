@@ -39,6 +39,22 @@ SceneComparison compare_scene(const Scene& scene, Backends& backends, const std:
     const auto cov_heat = heat_map(cpu_cov, gl_cov);
     write_png_bytes(out_dir + "/" + c.coverage_diff_png, cpu.image.width, cpu.image.height, 3,
                     cov_heat.data());
+    for (size_t i = 0; i < cpu.outputs.size(); ++i) {
+        const NamedImage &a = cpu.outputs[i], &b = gl.outputs[i];
+        OutputComparison o;
+        o.name = a.name;
+        o.metrics = compare_images(a.image, b.image);
+        o.failures = scene.criteria.failures(o.metrics, 0);
+        o.cpu_hash = pixel_hash(a.image);
+        o.gl_hash = pixel_hash(b.image);
+        const std::string stem = scene.name + "." + a.name;
+        o.cpu_png = write_rendered(out_dir, stem, Backend::Cpu, a.image, backends);
+        o.gl_png = write_rendered(out_dir, stem, Backend::Gl, b.image, backends);
+        o.diff_png = stem + ".diff.png";
+        const auto h = heat_map(a.image, b.image);
+        write_png_bytes(out_dir + "/" + o.diff_png, a.image.width, a.image.height, 3, h.data());
+        c.outputs.push_back(std::move(o));
+    }
     return c;
 }
 
@@ -67,6 +83,15 @@ nlohmann::json to_json(const SceneComparison& c) {
     j["gl_ms"] = c.gl_ms;
     j["cpu_hash"] = c.cpu_hash;
     j["gl_hash"] = c.gl_hash;
+    j["outputs"] = nlohmann::json::array();
+    for (const auto& o : c.outputs) {
+        nlohmann::json jo = {{"name", o.name}, {"pass", o.failures.empty()}};
+        jo.update(metrics_json(o.metrics));
+        jo["failures"] = o.failures;
+        jo["cpu_hash"] = o.cpu_hash;
+        jo["gl_hash"] = o.gl_hash;
+        j["outputs"].push_back(jo);
+    }
     return j;
 }
 

@@ -14,6 +14,15 @@
 
 namespace st {
 
+// A named output (a render target's level) compared on both backends.
+struct OutputComparison {
+    std::string name;
+    CompareMetrics metrics;
+    std::vector<std::string> failures;
+    std::string cpu_hash, gl_hash;
+    std::string cpu_png, gl_png, diff_png;
+};
+
 struct SceneComparison {
     std::string scene;
     CompareMetrics metrics;
@@ -23,7 +32,12 @@ struct SceneComparison {
     std::string cpu_hash, gl_hash;
     // File names relative to the output folder.
     std::string cpu_png, gl_png, diff_png, coverage_diff_png;
-    bool pass() const { return failures.empty(); }
+    std::vector<OutputComparison> outputs;  // the scene's criteria apply to each
+    bool pass() const {
+        for (const auto& o : outputs)
+            if (!o.failures.empty()) return false;
+        return failures.empty();
+    }
 };
 
 SceneComparison compare_scene(const Scene& scene, Backends& backends, const std::string& out_dir);

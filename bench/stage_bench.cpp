@@ -114,7 +114,7 @@ void BM_Blend(benchmark::State& state, BlendMode mode) {
     float* out_colour[2] = {colour[0], colour[1]};
     float* out_depth[2] = {depth[0], depth[1]};
     for (auto _ : state) {
-        merge_lanes(ds, src, Float(0.5f), Mask(true), in_colour, in_depth, out_colour, out_depth);
+        merge_lanes(ds, false, src, Float(0.5f), Mask(true), in_colour, in_depth, out_colour, out_depth);
         benchmark::DoNotOptimize(colour);
     }
     state.SetItemsProcessed(int64_t(state.iterations()) * kLanes);

@@ -69,6 +69,10 @@ struct Texture {
     std::vector<float> texels32;    // float formats: width*height*4
     std::vector<TextureLevel> mips;
     bool cube = false;
+    // Non-empty: the texture is the named render target as earlier passes
+    // of the frame left it (its format, size and levels; the texels above
+    // are unused), sampled with the filters and wraps above.
+    std::string target;
 
     int level_count() const { return 1 + int(mips.size()); }
     int faces() const { return cube ? 6 : 1; }
@@ -81,12 +85,24 @@ enum class BlendMode {
     None,
     OneSrcAlpha,        // glBlendFunc(GL_ONE, GL_SRC_ALPHA): thin-slab Eq. 9
     SrcAlphaOneMinusSrcAlpha,  // ordinary alpha blending
+    Factors,            // DrawState::factors, GL_FUNC_ADD
+};
+
+// glBlendFuncSeparate's factors (GL_FUNC_ADD).
+enum class BlendFactor {
+    Zero, One, SrcColor, OneMinusSrcColor, SrcAlpha, OneMinusSrcAlpha, DstColor, OneMinusDstColor, DstAlpha,
+    OneMinusDstAlpha
+};
+struct BlendFactors {
+    BlendFactor src_rgb = BlendFactor::One, dst_rgb = BlendFactor::Zero;
+    BlendFactor src_alpha = BlendFactor::One, dst_alpha = BlendFactor::Zero;
 };
 
 struct DrawState {
     bool depth_test = false;   // GL_LESS against a 32-bit float depth buffer
     bool depth_write = true;
     BlendMode blend = BlendMode::None;
+    BlendFactors factors;      // for BlendMode::Factors
 };
 
 // Work the host does on a draw's vertices at the start of every frame, before
@@ -113,15 +129,35 @@ struct DrawCall {
     std::shared_ptr<const HostStage> host_stage;  // optional
 };
 
+// A named render target that passes draw into and later passes sample.
+enum class TargetFormat { RGBA16F, RGBA32F };
+struct RenderTarget {
+    std::string name;
+    int width = 0, height = 0;
+    TargetFormat format = TargetFormat::RGBA32F;
+    int levels = 1;                      // level L is max(1, size >> L)
+};
+
 struct Pass {
-    int width = 0, height = 0;           // RGBA32F colour + 32F depth target
+    // Empty: the frame's image (RGBA32F, width x height). Else one level of
+    // a named target, whose size width x height must be.
+    std::string target;
+    int level = 0;
+    int width = 0, height = 0;           // the colour buffer drawn into, + a 32F depth buffer
+    TargetFormat format = TargetFormat::RGBA32F;  // the colour buffer's (its target's) format
+    // glViewport within it; width 0 means all of it.
+    int viewport_x = 0, viewport_y = 0, viewport_width = 0, viewport_height = 0;
+    bool clear = true;                   // else the level keeps what earlier passes left
     glm::vec4 clear_colour{0, 0, 0, 0};
     float clear_depth = 1.0f;
     std::vector<DrawCall> draws;
 };
 
 struct Frame {
-    std::vector<Pass> passes;            // the last pass's target is the image
+    std::vector<RenderTarget> targets;
+    // In order; the frame's image is what the passes without a target drew
+    // (the last of them), and each named target is an output too.
+    std::vector<Pass> passes;
 };
 
 // The coverage pass used by `compare`: every draw keeps its vertex stage but

@@ -99,6 +99,21 @@ GLint gl_wrap(TextureWrap w) {
     }
     return GL_REPEAT;
 }
+GLenum gl_factor(BlendFactor f) {
+    switch (f) {
+        case BlendFactor::Zero: return GL_ZERO;
+        case BlendFactor::One: return GL_ONE;
+        case BlendFactor::SrcColor: return GL_SRC_COLOR;
+        case BlendFactor::OneMinusSrcColor: return GL_ONE_MINUS_SRC_COLOR;
+        case BlendFactor::SrcAlpha: return GL_SRC_ALPHA;
+        case BlendFactor::OneMinusSrcAlpha: return GL_ONE_MINUS_SRC_ALPHA;
+        case BlendFactor::DstColor: return GL_DST_COLOR;
+        case BlendFactor::OneMinusDstColor: return GL_ONE_MINUS_DST_COLOR;
+        case BlendFactor::DstAlpha: return GL_DST_ALPHA;
+        case BlendFactor::OneMinusDstAlpha: return GL_ONE_MINUS_DST_ALPHA;
+    }
+    return GL_ONE;
+}
 GLint gl_mag_filter(TextureFilter f) { return f == TextureFilter::Linear ? GL_LINEAR : GL_NEAREST; }
 GLint gl_min_filter(TextureFilter f, MipFilter mip) {
     const bool linear = f == TextureFilter::Linear;
@@ -170,21 +185,36 @@ struct GlRenderer::State {
     struct Draw {
         GLuint program = 0, vao = 0, vbo = 0, ebo = 0;
         GLsizei index_count = 0;
-        std::vector<GLuint> textures;
+        std::vector<GLuint> textures;         // per unit; a render target's texture is not the draw's
         std::vector<GLenum> texture_targets;  // GL_TEXTURE_2D or GL_TEXTURE_CUBE_MAP, per unit
+        std::vector<GLuint> samplers;         // per unit: 0, or a sampler object for a render target
+        std::vector<GLuint> owned_textures;
         DrawState state;
         std::shared_ptr<const HostStage> host_stage;
         VertexArray vertices;  // kept only when a host stage rewrites them per frame
     };
+    // A pass: its own RGBA32F target (the frame's image), or a level of a
+    // named target (fbo and colour then belong to `named`).
     struct Target {
         GLuint fbo = 0, colour = 0, depth = 0;
+        bool owned = true;
         int width = 0, height = 0;
+        int viewport[4] = {0, 0, 0, 0};
+        bool clear = true;
         glm::vec4 clear_colour;
         float clear_depth = 1.0f;
         std::vector<Draw> draws;
     };
+    // A named render target: one texture, and per level an FBO with its
+    // own depth buffer.
+    struct Named {
+        RenderTarget desc;
+        GLuint texture = 0;
+        std::vector<GLuint> fbos, depths;
+    };
     std::map<std::pair<std::string, std::string>, GLuint> programs;  // kept across frames
     std::vector<Target> passes;
+    std::map<std::string, Named> named;
 
     void release_passes() {
         for (Target& t : passes) {
@@ -192,13 +222,23 @@ struct GlRenderer::State {
                 glDeleteVertexArrays(1, &d.vao);
                 glDeleteBuffers(1, &d.vbo);
                 glDeleteBuffers(1, &d.ebo);
-                glDeleteTextures(GLsizei(d.textures.size()), d.textures.data());
+                glDeleteTextures(GLsizei(d.owned_textures.size()), d.owned_textures.data());
+                for (GLuint sampler : d.samplers)
+                    if (sampler) glDeleteSamplers(1, &sampler);
             }
-            glDeleteFramebuffers(1, &t.fbo);
-            glDeleteTextures(1, &t.colour);
-            glDeleteRenderbuffers(1, &t.depth);
+            if (t.owned) {
+                glDeleteFramebuffers(1, &t.fbo);
+                glDeleteTextures(1, &t.colour);
+                glDeleteRenderbuffers(1, &t.depth);
+            }
         }
         passes.clear();
+        for (auto& [name, n] : named) {
+            glDeleteFramebuffers(GLsizei(n.fbos.size()), n.fbos.data());
+            glDeleteRenderbuffers(GLsizei(n.depths.size()), n.depths.data());
+            glDeleteTextures(1, &n.texture);
+        }
+        named.clear();
     }
 };
 
@@ -219,25 +259,64 @@ void GlRenderer::prepare(const Frame& frame) {
     state_->release_passes();
     // Cube maps filter across their faces, as real renderers set them.
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    for (const RenderTarget& rt : frame.targets) {
+        State::Named n;
+        n.desc = rt;
+        glGenTextures(1, &n.texture);
+        glBindTexture(GL_TEXTURE_2D, n.texture);
+        glTexStorage2D(GL_TEXTURE_2D, rt.levels, rt.format == TargetFormat::RGBA16F ? GL_RGBA16F : GL_RGBA32F,
+                       rt.width, rt.height);
+        for (int level = 0; level < rt.levels; ++level) {
+            GLuint fbo = 0, depth = 0;
+            glGenRenderbuffers(1, &depth);
+            glBindRenderbuffer(GL_RENDERBUFFER, depth);
+            glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, std::max(1, rt.width >> level),
+                                  std::max(1, rt.height >> level));
+            glGenFramebuffers(1, &fbo);
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, n.texture, level);
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+            if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+                throw std::runtime_error("GL: incomplete framebuffer for target " + rt.name);
+            // Start from zero, as the CPU side does.
+            glClearColor(0, 0, 0, 0);
+            glClear(GL_COLOR_BUFFER_BIT);
+            n.fbos.push_back(fbo);
+            n.depths.push_back(depth);
+        }
+        state_->named[rt.name] = std::move(n);
+    }
     for (const Pass& pass : frame.passes) {
         State::Target t;
         t.width = pass.width;
         t.height = pass.height;
+        t.clear = pass.clear;
         t.clear_colour = pass.clear_colour;
         t.clear_depth = pass.clear_depth;
-        glGenTextures(1, &t.colour);
-        glBindTexture(GL_TEXTURE_2D, t.colour);
-        glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, t.width, t.height);
-        glGenRenderbuffers(1, &t.depth);
-        glBindRenderbuffer(GL_RENDERBUFFER, t.depth);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, t.width, t.height);
-        glGenFramebuffers(1, &t.fbo);
-        glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.colour, 0);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth);
-        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            throw std::runtime_error("GL: incomplete framebuffer " + std::to_string(t.width) + "x" +
-                                     std::to_string(t.height));
+        t.viewport[0] = pass.viewport_x;
+        t.viewport[1] = pass.viewport_y;
+        t.viewport[2] = pass.viewport_width ? pass.viewport_width : pass.width;
+        t.viewport[3] = pass.viewport_height ? pass.viewport_height : pass.height;
+        if (!pass.target.empty()) {
+            const State::Named& n = state_->named.at(pass.target);
+            t.owned = false;
+            t.fbo = n.fbos[size_t(pass.level)];
+            t.colour = n.texture;
+        } else {
+            glGenTextures(1, &t.colour);
+            glBindTexture(GL_TEXTURE_2D, t.colour);
+            glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, t.width, t.height);
+            glGenRenderbuffers(1, &t.depth);
+            glBindRenderbuffer(GL_RENDERBUFFER, t.depth);
+            glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, t.width, t.height);
+            glGenFramebuffers(1, &t.fbo);
+            glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
+            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.colour, 0);
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth);
+            if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+                throw std::runtime_error("GL: incomplete framebuffer " + std::to_string(t.width) + "x" +
+                                         std::to_string(t.height));
+        }
 
         for (const DrawCall& dc : pass.draws) {
             auto key = std::make_pair(dc.vertex, dc.fragment);
@@ -277,15 +356,27 @@ void GlRenderer::prepare(const Frame& frame) {
             for (const Uniform& u : dc.uniforms) set_uniform(d.program, u);
             for (size_t unit = 0; unit < dc.textures.size(); ++unit) {
                 const Texture& tex = dc.textures[unit];
-                GLuint name = 0;
-                glGenTextures(1, &name);
-                glBindTexture(gl_target(tex), name);
-                glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-                upload_texture(tex);
+                GLuint name = 0, sampler = 0;
+                if (!tex.target.empty()) {
+                    // A render target: its texture, filtered by a sampler object.
+                    name = state_->named.at(tex.target).texture;
+                    glGenSamplers(1, &sampler);
+                    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, gl_min_filter(tex.min_filter, tex.mip_filter));
+                    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, gl_mag_filter(tex.mag_filter));
+                    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap_s));
+                    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap_t));
+                } else {
+                    glGenTextures(1, &name);
+                    glBindTexture(gl_target(tex), name);
+                    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+                    upload_texture(tex);
+                    d.owned_textures.push_back(name);
+                }
                 const GLint loc = glGetUniformLocation(d.program, tex.sampler.c_str());
                 if (loc >= 0) glUniform1i(loc, GLint(unit));
                 d.textures.push_back(name);
                 d.texture_targets.push_back(gl_target(tex));
+                d.samplers.push_back(sampler);
             }
             t.draws.push_back(std::move(d));
         }
@@ -301,11 +392,11 @@ void GlRenderer::execute() {
     glDisable(GL_CULL_FACE);
     for (State::Target& t : state_->passes) {
         glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
-        glViewport(0, 0, t.width, t.height);
+        glViewport(t.viewport[0], t.viewport[1], t.viewport[2], t.viewport[3]);
         glDepthMask(GL_TRUE);
         glClearColor(t.clear_colour.r, t.clear_colour.g, t.clear_colour.b, t.clear_colour.a);
         glClearDepth(t.clear_depth);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        glClear(t.clear ? GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT : GL_DEPTH_BUFFER_BIT);
         for (State::Draw& d : t.draws) {
             if (d.state.depth_test) {
                 glEnable(GL_DEPTH_TEST);
@@ -324,6 +415,14 @@ void GlRenderer::execute() {
                     glEnable(GL_BLEND);
                     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
                     break;
+                case BlendMode::Factors: {
+                    const BlendFactors& f = d.state.factors;
+                    glEnable(GL_BLEND);
+                    glBlendEquation(GL_FUNC_ADD);
+                    glBlendFuncSeparate(gl_factor(f.src_rgb), gl_factor(f.dst_rgb), gl_factor(f.src_alpha),
+                                        gl_factor(f.dst_alpha));
+                    break;
+                }
             }
             if (d.host_stage) {
                 // The host's per-frame work and its upload belong to the frame.
@@ -336,6 +435,7 @@ void GlRenderer::execute() {
             for (size_t unit = 0; unit < d.textures.size(); ++unit) {
                 glActiveTexture(GLenum(GL_TEXTURE0 + unit));
                 glBindTexture(d.texture_targets[unit], d.textures[unit]);
+                glBindSampler(GLuint(unit), d.samplers[unit]);
             }
             glBindVertexArray(d.vao);
             glDrawElements(GL_TRIANGLES, d.index_count, GL_UNSIGNED_INT, nullptr);
@@ -346,18 +446,35 @@ void GlRenderer::execute() {
         throw std::runtime_error("GL error " + std::to_string(err) + " while drawing");
 }
 
+namespace {
+
+Image read_fbo(GLuint fbo, int width, int height) {
+    Image bottom_up(width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, bottom_up.rgba.data());
+    Image image(width, height);
+    for (int y = 0; y < height; ++y)
+        std::copy_n(bottom_up.pixel(0, height - 1 - y), size_t(width) * 4, image.pixel(0, y));
+    return image;
+}
+
+}  // namespace
+
 Image GlRenderer::read_back() {
     context_->make_current();
-    if (state_->passes.empty()) throw std::runtime_error("GL: nothing rendered");
-    const State::Target& t = state_->passes.back();
-    Image bottom_up(t.width, t.height);
-    glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, t.width, t.height, GL_RGBA, GL_FLOAT, bottom_up.rgba.data());
-    Image image(t.width, t.height);
-    for (int y = 0; y < t.height; ++y)
-        std::copy_n(bottom_up.pixel(0, t.height - 1 - y), size_t(t.width) * 4, image.pixel(0, y));
-    return image;
+    for (auto t = state_->passes.rbegin(); t != state_->passes.rend(); ++t)
+        if (t->owned) return read_fbo(t->fbo, t->width, t->height);
+    throw std::runtime_error("GL: nothing rendered");
+}
+
+Image GlRenderer::read_back(const std::string& target, int level) {
+    context_->make_current();
+    const auto it = state_->named.find(target);
+    if (it == state_->named.end() || level < 0 || level >= it->second.desc.levels)
+        throw std::runtime_error("GL: no render target " + target + " level " + std::to_string(level));
+    const RenderTarget& rt = it->second.desc;
+    return read_fbo(it->second.fbos[size_t(level)], std::max(1, rt.width >> level), std::max(1, rt.height >> level));
 }
 
 }  // namespace st

@@ -24,8 +24,11 @@ public:
     void prepare(const Frame& frame);
     // Issues every pass's draws and waits for them (glFinish).
     void execute();
-    // The last pass's colour target, rows top to bottom.
+    // The frame's image (the last pass without a named target), rows top to
+    // bottom.
     Image read_back();
+    // One level of a named render target as the frame left it.
+    Image read_back(const std::string& target, int level);
 
     Image render(const Frame& frame) {
         prepare(frame);

@@ -2,6 +2,8 @@
 #include "raster/cpu_renderer.h"
 
 #include <algorithm>
+#include <map>
+#include <string>
 #include <stdexcept>
 
 #include "raster/binner.h"
@@ -31,7 +33,17 @@ struct CpuRenderer::Impl {
     std::vector<TileShader> tile_shaders;  // one per worker
     Frame frame;
     std::vector<std::vector<PreparedDraw>> passes;  // [pass][draw]
-    std::unique_ptr<Framebuffer> result;
+    std::unique_ptr<Framebuffer> result;   // the frame's image
+    std::unique_ptr<Framebuffer> target_fb;  // a named target's level while a pass draws into it
+    // Named targets as the passes so far left them: per level, RGBA texels
+    // with row 0 at the bottom (halves already rounded for RGBA16F).
+    std::map<std::string, std::vector<std::vector<float>>> targets;
+    const RenderTarget* target(const std::string& name) const {
+        for (const RenderTarget& t : frame.targets)
+            if (t.name == name) return &t;
+        return nullptr;
+    }
+    void refresh_target_textures(std::vector<PreparedDraw>& draws);
 
     Binner binner;  // per-pass setup output, reused across passes and frames
 
@@ -63,7 +75,27 @@ void CpuRenderer::prepare(const Frame& frame) {
                 throw std::runtime_error("no C++ twin for fragment program '" + call.fragment + "'");
             d.bindings.uniforms = &call.uniforms;
             for (const Texture& t : call.textures) {
-                if (t.cube) {
+                if (!t.target.empty()) {
+                    // Sized and filtered as the target; texels each frame.
+                    const RenderTarget* rt = impl_->target(t.target);
+                    if (!rt) throw std::runtime_error("texture '" + t.sampler + "' reads unknown target " + t.target);
+                    auto& tt = d.target_textures.emplace_back();
+                    tt.texture = t;
+                    tt.texture.format = TextureFormat::RGBA32F;  // the stored values, halves included, as floats
+                    tt.texture.width = rt->width;
+                    tt.texture.height = rt->height;
+                    tt.texture.texels32.assign(size_t(rt->width) * size_t(rt->height) * 4, 0.0f);
+                    for (int level = 1; level < rt->levels; ++level) {
+                        TextureLevel l;
+                        l.width = std::max(1, rt->width >> level);
+                        l.height = std::max(1, rt->height >> level);
+                        l.texels32.assign(size_t(l.width) * size_t(l.height) * 4, 0.0f);
+                        tt.texture.mips.push_back(std::move(l));
+                    }
+                    tt.sampler = &d.samplers.emplace_back(tt.texture);
+                    d.bindings.samplers.push_back(tt.sampler);
+                    d.bindings.sampler_names.push_back(t.sampler);
+                } else if (t.cube) {
                     d.bindings.cube_samplers.push_back(&d.cube_samplers.emplace_back(t));
                     d.bindings.cube_sampler_names.push_back(t.sampler);
                 } else {
@@ -96,18 +128,42 @@ void CpuRenderer::Impl::run_vertex_stage(PreparedDraw& d, const Viewport& viewpo
     });
 }
 
+// Copies the current texels of each render target a draw samples into its
+// texture and rebuilds the sampler (same size and levels, so the twin's
+// binding stays valid).
+void CpuRenderer::Impl::refresh_target_textures(std::vector<PreparedDraw>& draws) {
+    for (PreparedDraw& d : draws)
+        for (auto& tt : d.target_textures) {
+            const auto& levels = targets.at(tt.texture.target);
+            tt.texture.texels32 = levels[0];
+            for (size_t l = 1; l < levels.size(); ++l) tt.texture.mips[l - 1].texels32 = levels[l];
+            *tt.sampler = Sampler2D(tt.texture);
+        }
+}
+
 void CpuRenderer::execute() {
     Impl& m = *impl_;
     const FlushDenormals float_env;  // as llvmpipe's threads (float_env.h)
     times_ = StageTimes{};
+    // Every target starts the frame at zero, as on the GL side.
+    m.targets.clear();
+    for (const RenderTarget& t : m.frame.targets)
+        for (int level = 0; level < t.levels; ++level)
+            m.targets[t.name].emplace_back(
+                size_t(std::max(1, t.width >> level)) * size_t(std::max(1, t.height >> level)) * 4, 0.0f);
     for (size_t pi = 0; pi < m.frame.passes.size(); ++pi) {
         const Pass& pass = m.frame.passes[pi];
         auto& draws = m.passes[pi];
-        const Viewport viewport{0, 0, float(pass.width), float(pass.height), 0, 1};
+        const Viewport viewport{float(pass.viewport_x), float(pass.viewport_y),
+                                float(pass.viewport_width ? pass.viewport_width : pass.width),
+                                float(pass.viewport_height ? pass.viewport_height : pass.height), 0, 1};
         const auto t0 = Clock::now();
-        // The allocation is reused from frame to frame; tiles clear it.
-        if (!m.result || m.result->width != pass.width || m.result->height != pass.height)
-            m.result = std::make_unique<Framebuffer>(pass.width, pass.height);
+        m.refresh_target_textures(draws);
+        // The allocations are reused from frame to frame; tiles clear them.
+        std::unique_ptr<Framebuffer>& fb = pass.target.empty() ? m.result : m.target_fb;
+        if (!fb || fb->width != pass.width || fb->height != pass.height)
+            fb = std::make_unique<Framebuffer>(pass.width, pass.height);
+        if (!pass.target.empty() && !pass.clear) fb->load_texels(m.targets.at(pass.target)[size_t(pass.level)]);
         for (PreparedDraw& d : draws) m.run_vertex_stage(d, viewport);
         const auto t1 = Clock::now();
         m.binner.run(draws, pass.width, pass.height, viewport, m.pool);
@@ -117,8 +173,9 @@ void CpuRenderer::execute() {
         // at the end; tiles are independent, so the order changes no pixel.
         const std::vector<int>& order = m.binner.tiles_by_load();
         m.pool.run(int(order.size()), [&](int i, int worker) {
-            m.tile_shaders[size_t(worker)].shade(order[size_t(i)], m.binner, draws, pass, *m.result);
+            m.tile_shaders[size_t(worker)].shade(order[size_t(i)], m.binner, draws, pass, *fb);
         });
+        if (!pass.target.empty()) m.targets.at(pass.target)[size_t(pass.level)] = fb->texels();
         const auto t3 = Clock::now();
 
         StageTimes tiles;
@@ -136,6 +193,19 @@ void CpuRenderer::execute() {
 Image CpuRenderer::read_back() const {
     if (!impl_->result) throw std::runtime_error("CPU: nothing rendered");
     return impl_->result->to_image();
+}
+
+Image CpuRenderer::read_back(const std::string& target, int level) const {
+    const auto it = impl_->targets.find(target);
+    const RenderTarget* rt = impl_->target(target);
+    if (it == impl_->targets.end() || !rt || level < 0 || level >= int(it->second.size()))
+        throw std::runtime_error("CPU: no render target " + target + " level " + std::to_string(level));
+    const int w = std::max(1, rt->width >> level), h = std::max(1, rt->height >> level);
+    const std::vector<float>& texels = it->second[size_t(level)];
+    Image image(w, h);
+    for (int y = 0; y < h; ++y)
+        std::copy_n(&texels[size_t(h - 1 - y) * size_t(w) * 4], size_t(w) * 4, image.pixel(0, y));
+    return image;
 }
 
 }  // namespace st

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "frame/frame.h"
@@ -32,7 +33,10 @@ public:
     void prepare(const Frame& frame);
     // Renders every pass; stage_times() then holds this frame's breakdown.
     void execute();
+    // The frame's image (the last pass without a named target).
     Image read_back() const;
+    // One level of a named render target as the frame left it.
+    Image read_back(const std::string& target, int level) const;
 
     Image render(const Frame& frame) {
         prepare(frame);

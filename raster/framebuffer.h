@@ -55,6 +55,29 @@ struct Framebuffer {
         return glm::vec4(c[0], c[kGroupLanes], c[2 * kGroupLanes], c[3 * kGroupLanes]);
     }
 
+    // The colour as RGBA texels, row 0 at the bottom (glReadPixels order),
+    // and back: how a render target passes from one pass to the next.
+    std::vector<float> texels() const {
+        std::vector<float> out(size_t(width) * size_t(height) * 4);
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                const glm::vec4 c = pixel(x, y);
+                float* o = &out[(size_t(y) * size_t(width) + size_t(x)) * 4];
+                o[0] = c.r, o[1] = c.g, o[2] = c.b, o[3] = c.a;
+            }
+        return out;
+    }
+    void load_texels(const std::vector<float>& in) {
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                const size_t b = block(x & ~(kBlockSize - 1), y & ~(kBlockSize - 1));
+                const int lane = block_lane(x & (kBlockSize - 1), y & (kBlockSize - 1));
+                float* c = &colour[(b * 2 + size_t(lane / kGroupLanes)) * kGroupFloats + size_t(lane % kGroupLanes)];
+                const float* i = &in[(size_t(y) * size_t(width) + size_t(x)) * 4];
+                for (int ch = 0; ch < 4; ++ch) c[ch * kGroupLanes] = i[ch];
+            }
+    }
+
     Image to_image() const {
         Image image(width, height);
         for (int y = 0; y < height; ++y)

@@ -22,6 +22,14 @@ struct PreparedDraw {
     std::unique_ptr<FragmentTwin> fragment;
     std::deque<Sampler2D> samplers;       // deque: Bindings keeps pointers
     std::deque<SamplerCube> cube_samplers;
+    // Textures that are render targets: their texels are what earlier passes
+    // drew, copied in before this draw's pass (sampler points at its entry
+    // of `samplers`, refreshed then).
+    struct TargetTexture {
+        Texture texture;
+        Sampler2D* sampler = nullptr;
+    };
+    std::deque<TargetTexture> target_textures;
     Bindings bindings;
     int varying_count = 0;
     uint32_t inputs_read = ~0u;           // fragment->inputs_read()

@@ -10,6 +10,7 @@
 #include <algorithm>
 
 #include "raster/output_merge.h"
+#include "texture/texel_formats.h"
 
 namespace st {
 
@@ -31,12 +32,18 @@ void TileShader::shade(int tile, const Binner& binner, const std::vector<Prepare
                         std::min(pass.height, (tile / tiles_x + 1) * kTileSize)};
     // The clear is part of the frame, as glClear is on the GL side; each
     // tile clears its own blocks, lazily (tile_shader.h).
-    for (int c = 0; c < 4; ++c) std::fill_n(clear_colour_ + c * kGroupLanes, kGroupLanes, pass.clear_colour[c]);
+    rgba16f_ = pass.format == TargetFormat::RGBA16F;
+    // An RGBA16F clear is rounded as any store to it.
+    for (int c = 0; c < 4; ++c)
+        std::fill_n(clear_colour_ + c * kGroupLanes, kGroupLanes,
+                    rgba16f_ ? rgba16f_stored(pass.clear_colour[c]) : pass.clear_colour[c]);
     std::fill_n(clear_depth_, kGroupLanes, pass.clear_depth);
     // Depth is only ever read by a depth test: in a pass without one it is
     // neither cleared nor written (read_back() returns colour only).
     depth_used_ = std::any_of(draws.begin(), draws.end(), [](const PreparedDraw& d) { return d.call->state.depth_test; });
-    std::fill_n(written_, kTileGroups, false);
+    // A pass that does not clear draws over what the framebuffer holds
+    // (the caller has loaded it); it tests no depth (scenes check).
+    std::fill_n(written_, kTileGroups, !pass.clear);
     size_t chunk = 0, next = 0;  // the next triangle: chunk's bin entry `next`
     while (chunk < binner.chunk_count()) {
         const auto t0 = Clock::now();
@@ -144,7 +151,7 @@ void TileShader::merge(size_t calls, const std::vector<PreparedDraw>& draws, con
                 written = true;
             }
         }
-        merge_lanes(state, call.result.colour, call.depth, Mask::from_bits(call.live), in_colour, in_depth,
+        merge_lanes(state, rgba16f_, call.result.colour, call.depth, Mask::from_bits(call.live), in_colour, in_depth,
                     out_colour, out_depth);
     }
 }

@@ -55,6 +55,7 @@ private:
     bool written_[kTileGroups] = {};
     float clear_colour_[4 * kGroupLanes] = {}, clear_depth_[kGroupLanes] = {};
     bool depth_used_ = false;  // some draw of the pass tests depth
+    bool rgba16f_ = false;     // the colour buffer stores halves
 
     std::vector<BlockCoverage> blocks_;
     std::vector<TileGroup> groups_;

@@ -5,12 +5,15 @@
 // whose lanes leave at different passes, a texture read in a divergent
 // branch, discard, derivatives of computed values, non-finite outputs.
 // The vertex stage is glsl/triangles/textured.vert: position, colour, uv.
+#include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "scene/input_error.h"
 #include "scene/scene_kinds.h"
 #include "scene/texture_patterns.h"
 #include "scene/triangle_list.h"
+#include "texture/mip_generation.h"
 
 namespace st {
 
@@ -19,6 +22,8 @@ namespace {
 constexpr double kHuge = 1e30;
 constexpr size_t kMaxUniforms = 64;
 constexpr size_t kMaxTextures = 8;
+constexpr size_t kMaxTargets = 16;
+constexpr size_t kMaxPasses = 64;
 
 // {"name": "steps", "int": 40} | {"name": "dir", "vec2": [0.1, 0.2]} | ...
 Uniform read_uniform(JsonReader& r) {
@@ -47,32 +52,154 @@ Uniform read_uniform(JsonReader& r) {
     return u;
 }
 
-}  // namespace
+BlendFactor factor_named(const std::string& name, const std::string& field) {
+    static const std::pair<const char*, BlendFactor> names[] = {
+        {"zero", BlendFactor::Zero},
+        {"one", BlendFactor::One},
+        {"src_colour", BlendFactor::SrcColor},
+        {"one_minus_src_colour", BlendFactor::OneMinusSrcColor},
+        {"src_alpha", BlendFactor::SrcAlpha},
+        {"one_minus_src_alpha", BlendFactor::OneMinusSrcAlpha},
+        {"dst_colour", BlendFactor::DstColor},
+        {"one_minus_dst_colour", BlendFactor::OneMinusDstColor},
+        {"dst_alpha", BlendFactor::DstAlpha},
+        {"one_minus_dst_alpha", BlendFactor::OneMinusDstAlpha}};
+    for (const auto& [n, f] : names)
+        if (name == n) return f;
+    throw InputError("field '" + field + "': unknown blend factor '" + name + "'");
+}
 
-Frame build_conformance_scene(JsonReader& scene, SceneSize size) {
+// "blend": [src, dst] or [src_rgb, dst_rgb, src_alpha, dst_alpha], GL_FUNC_ADD.
+void read_blend(JsonReader& r, DrawState& state) {
+    if (!r.has("blend")) return;
+    const auto& a = r.array("blend", 2, 4);
+    if (a.size() == 3) throw InputError("field '" + r.field("blend") + "' needs 2 or 4 factor names");
+    std::vector<BlendFactor> f;
+    for (size_t i = 0; i < a.size(); ++i) {
+        const std::string where = r.field("blend") + "." + std::to_string(i);
+        if (!a[i].is_string()) throw InputError("field '" + where + "' must be a factor name");
+        f.push_back(factor_named(a[i].get<std::string>(), where));
+    }
+    state.blend = BlendMode::Factors;
+    state.factors = a.size() == 2 ? BlendFactors{f[0], f[1], f[0], f[1]} : BlendFactors{f[0], f[1], f[2], f[3]};
+}
+
+// The fields every pass has, the scene's own (final) pass included.
+Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSize image) {
     Pass pass;
+    SceneSize size = image;
+    if (r.has("target")) {
+        pass.target = r.string("target");
+        const RenderTarget* rt = nullptr;
+        for (const RenderTarget& t : targets)
+            if (t.name == pass.target) rt = &t;
+        if (!rt) throw InputError("field '" + r.field("target") + "': no target named '" + pass.target + "'");
+        pass.level = r.integer_or("level", 0, 0, rt->levels - 1);
+        pass.format = rt->format;
+        size = {std::max(1, rt->width >> pass.level), std::max(1, rt->height >> pass.level)};
+    }
     pass.width = size.width;
     pass.height = size.height;
-    if (scene.has("clear_colour")) {
-        const auto c = scene.numbers("clear_colour", 4, 4, -kHuge, kHuge);
+    if (r.has("viewport")) {
+        const auto v = r.numbers("viewport", 4, 4, 0, 8192);
+        for (double x : v)
+            if (x != std::floor(x)) throw InputError("field '" + r.field("viewport") + "' needs whole pixels");
+        if (v[2] < 1 || v[3] < 1 || v[0] + v[2] > size.width || v[1] + v[3] > size.height)
+            throw InputError("field '" + r.field("viewport") + "' must lie within the " + std::to_string(size.width) +
+                             "x" + std::to_string(size.height) + " target");
+        pass.viewport_x = int(v[0]), pass.viewport_y = int(v[1]);
+        pass.viewport_width = int(v[2]), pass.viewport_height = int(v[3]);
+    }
+    pass.clear = r.boolean_or("clear", true);
+    if (r.has("clear_colour")) {
+        const auto c = r.numbers("clear_colour", 4, 4, -kHuge, kHuge);
         pass.clear_colour = glm::vec4(float(c[0]), float(c[1]), float(c[2]), float(c[3]));
     }
     DrawCall draw;
     draw.vertex = "textured";
-    draw.fragment = scene.string("fragment");
-    if (scene.has("uniforms"))
-        for (JsonReader& u : scene.objects("uniforms", 0, kMaxUniforms)) draw.uniforms.push_back(read_uniform(u));
-    if (scene.has("textures"))
-        for (JsonReader& t : scene.objects("textures", 0, kMaxTextures)) {
+    draw.fragment = r.string("fragment");
+    if (r.has("uniforms"))
+        for (JsonReader& u : r.objects("uniforms", 0, kMaxUniforms)) draw.uniforms.push_back(read_uniform(u));
+    if (r.has("textures"))
+        for (JsonReader& t : r.objects("textures", 0, kMaxTextures)) {
             const std::string sampler = t.string("sampler");
             draw.textures.push_back(read_pattern_texture(t, sampler));
         }
-    draw.state.depth_test = scene.boolean_or("depth_test", false);
+    draw.state.depth_test = r.boolean_or("depth_test", false);
+    if (draw.state.depth_test && !pass.clear)
+        throw InputError("field '" + r.field("clear") + "': a pass that keeps its colour cannot test depth");
+    read_blend(r, draw.state);
     draw.vertices.attribute_count = 3;  // position, colour, uv
-    read_triangle_list(scene, size, TriangleListFormat{true, true, true}, draw);
+    read_triangle_list(r, size, TriangleListFormat{true, true, true}, draw);
     pass.draws.push_back(std::move(draw));
+    return pass;
+}
+
+RenderTarget read_target(JsonReader& r) {
+    RenderTarget t;
+    t.name = r.string("name");
+    if (t.name.empty()) throw InputError("field '" + r.field("name") + "' must not be empty");
+    t.width = r.integer("width", 1, 4096);
+    t.height = r.integer("height", 1, 4096);
+    t.format = r.choice_or("format", "rgba32f", {"rgba16f", "rgba32f"}) == "rgba16f" ? TargetFormat::RGBA16F
+                                                                                    : TargetFormat::RGBA32F;
+    t.levels = r.integer_or("levels", 1, 1, full_chain_levels(t.width, t.height));
+    r.finish();
+    return t;
+}
+
+// Each texture that reads a target must read one an earlier pass wrote, and
+// not the one its own pass writes.
+void check_target_reads(const Frame& frame, const std::vector<std::string>& where) {
+    std::set<std::string> written;
+    for (size_t p = 0; p < frame.passes.size(); ++p) {
+        const Pass& pass = frame.passes[p];
+        for (const DrawCall& d : pass.draws)
+            for (size_t i = 0; i < d.textures.size(); ++i) {
+                const std::string& name = d.textures[i].target;
+                if (name.empty()) continue;
+                const std::string field = where[p] + "textures." + std::to_string(i) + ".target";
+                bool known = false;
+                for (const RenderTarget& t : frame.targets) known |= t.name == name;
+                if (!known) throw InputError("field '" + field + "': no target named '" + name + "'");
+                if (name == pass.target)
+                    throw InputError("field '" + field + "': a pass cannot read the target it writes ('" + name + "')");
+                if (!written.count(name))
+                    throw InputError("field '" + field + "': target '" + name + "' is not written by an earlier pass");
+            }
+        if (!pass.target.empty()) written.insert(pass.target);
+    }
+    for (size_t t = 0; t < frame.targets.size(); ++t)
+        if (!written.count(frame.targets[t].name))
+            throw InputError("field 'targets." + std::to_string(t) + "': no pass writes target '" +
+                             frame.targets[t].name + "'");
+}
+
+}  // namespace
+
+Frame build_conformance_scene(JsonReader& scene, SceneSize size) {
     Frame frame;
-    frame.passes.push_back(std::move(pass));
+    std::vector<std::string> where;
+    if (scene.has("targets")) {
+        for (JsonReader& t : scene.objects("targets", 1, kMaxTargets)) {
+            frame.targets.push_back(read_target(t));
+            for (size_t i = 0; i + 1 < frame.targets.size(); ++i)
+                if (frame.targets[i].name == frame.targets.back().name)
+                    throw InputError("field '" + t.field("name") + "': target '" + frame.targets.back().name +
+                                     "' is named twice");
+        }
+    }
+    if (scene.has("passes"))
+        for (JsonReader& p : scene.objects("passes", 1, kMaxPasses)) {
+            where.push_back(p.path() + ".");
+            frame.passes.push_back(read_pass(p, frame.targets, size));
+            p.finish();
+        }
+    where.push_back("");
+    frame.passes.push_back(read_pass(scene, frame.targets, size));
+    if (!frame.passes.back().target.empty())
+        throw InputError("field 'target': the scene's own pass draws the image; put target passes in 'passes'");
+    check_target_reads(frame, where);
     return frame;
 }
 

@@ -88,6 +88,12 @@ Texture read_pattern_texture(JsonReader& r, const std::string& sampler) {
                                          "nearest_mipmap_linear", "linear_mipmap_linear"});
     t.min_filter = filter_named(min);
     t.mip_filter = mip_filter_named(min);
+    if (r.has("target")) {
+        // A render target: its size, format and levels are the target's.
+        t.target = r.string("target");
+        r.finish();
+        return t;
+    }
     t.width = r.integer("width", 1, 4096);
     t.height = r.integer("height", 1, 4096);
     t.cube = r.boolean_or("cube", false);

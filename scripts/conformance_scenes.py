@@ -173,3 +173,58 @@ for fmt in ["rgba8", "rgba32f"]:
       "textures": [{"sampler": "env", "cube": True, "format": fmt, "min_filter": "linear_mipmap_linear", "mag_filter": "linear",
                     "wrap": "clamp", "width": 8, "height": 8, "pattern": "noise", "seed": 32, "mipmaps": "distinct"}],
       "triangles": cube_quads(lod_cols=True)})
+
+# Passes and targets: render to texture (RGBA16F and RGBA32F, levels,
+# viewports, passes that keep what is there) and blend factors.
+def overlapping(n=3, uv_scale=1.0, alpha=0.6):
+    tris = []
+    for k in range(n):
+        ox, oy = 4 + k * 9.5, 3 + k * 7.25
+        P = [[ox, oy], [ox + 40.5, oy + 5.0], [ox + 12.0, oy + 44.5]]
+        U = [[0.1 * k, 0.0], [uv_scale, 0.2], [0.3, uv_scale]]
+        C = [[1, 0.8, 0.6, alpha], [0.5, 1, 0.9, alpha * 0.5], [0.9, 0.4, 1, 1.0]]
+        tris.append({"positions": P, "colours": C, "uvs": U})
+    return tris
+
+noise = lambda seed, fmt="rgba32f", **k: dict({"sampler": "tex", "format": fmt, "filter": "linear", "wrap": "repeat",
+                                               "width": 16, "height": 16, "pattern": "noise", "seed": seed}, **k)
+for pair in [["one", "one"], ["src_alpha", "one"], ["one", "one_minus_src_alpha"], ["dst_colour", "zero"],
+             ["one_minus_dst_alpha", "one"], ["src_colour", "one_minus_src_colour"], ["one", "zero", "zero", "one"],
+             ["zero", "src_alpha", "one", "one"]]:
+    write("blend-" + "-".join(p.replace("_", "-") for p in pair), {"kind": "conformance",
+      "description": f"Three overlapping textured triangles blended with glBlendFuncSeparate({', '.join(pair)}) over a non-zero clear colour.",
+      "width": 64, "height": 64, "fragment": "sample_implicit", "clear_colour": [0.2, 0.35, 0.5, 0.75],
+      "blend": pair, "textures": [noise(41)], "triangles": overlapping()})
+
+for fmt in ["rgba16f", "rgba32f"]:
+    write(f"two-pass-{fmt}", {"kind": "conformance",
+      "description": f"Render to texture: a {fmt} 32x32 target drawn (additively, two overlapping triangles, values past 1) then sampled magnified with a linear filter in the scene's pass.",
+      "width": 64, "height": 64,
+      "targets": [{"name": "lit", "width": 32, "height": 32, "format": fmt}],
+      "passes": [{"target": "lit", "fragment": "sample_implicit", "clear_colour": [0.1, 0.2, 0.3, 1.0],
+                  "blend": ["one", "one"], "textures": [noise(42)],
+                  "triangles": [{"positions": [[1, 1], [31, 3], [4, 30]], "uvs": [[0, 0], [2.3, 0.1], [0.2, 1.9]],
+                                 "colours": [[3.1, 0.7, 0.2, 1], [0.3, 2.2, 0.9, 1], [0.1, 0.5, 70000.0, 1]]},
+                                {"positions": [[30, 30], [2, 28], [29, 2]], "uvs": [[1, 1], [0, 0.9], [0.8, 0]],
+                                 "colours": [[1, 1, 1, 1], [0.25, 0.5, 1, 1], [1, 0.001, 0.3, 1]]}]}],
+      "fragment": "sample_implicit",
+      "textures": [{"sampler": "tex", "target": "lit", "filter": "linear", "wrap": "clamp"}],
+      "triangles": quad(0.5, 0.5, 63.5, 63.5, -0.1, -0.1, 1.1, 1.1, skew=1.0)})
+
+write("bloom-chain", {"kind": "conformance",
+  "description": "An HDR bloom chain: a bright pass into an RGBA16F target, a half-size blur of it into level 1 of a second target through a viewport, then the scene's pass adds the blurred level over the sharp image with (one, one).",
+  "width": 64, "height": 64,
+  "targets": [{"name": "bright", "width": 32, "height": 32, "format": "rgba16f"},
+              {"name": "blur", "width": 32, "height": 32, "format": "rgba16f", "levels": 2}],
+  "passes": [{"target": "bright", "fragment": "sample_implicit", "textures": [noise(43)],
+              "triangles": quad(0, 0, 32, 32, 0, 0, 2, 2, cols=[[4, 2, 1, 1], [1, 4, 2, 1], [2, 1, 4, 1], [3, 3, 3, 1]], skew=0.0)},
+             {"target": "blur", "level": 1, "viewport": [2, 1, 13, 14], "fragment": "sample_lod",
+              "uniforms": [{"name": "lod_min", "float": 0.0}, {"name": "lod_max", "float": 0.0}],
+              "textures": [{"sampler": "tex", "target": "bright", "filter": "linear", "wrap": "clamp"}],
+              "triangles": quad(0, 0, 16, 16, 0.02, 0.03, 0.98, 0.97, skew=0.0)},
+             {"target": "blur", "level": 0, "clear": False, "viewport": [5, 7, 20, 17], "fragment": "sample_implicit",
+              "textures": [{"sampler": "tex", "target": "bright", "filter": "nearest", "wrap": "repeat"}],
+              "triangles": quad(0, 0, 32, 32, 0.5, 0.5, 1.5, 1.5, skew=2.0)}],
+  "fragment": "sample_implicit", "blend": ["one", "one"],
+  "textures": [{"sampler": "tex", "target": "blur", "min_filter": "linear_mipmap_linear", "mag_filter": "linear", "wrap": "clamp"}],
+  "triangles": quad(0.5, 0.5, 63.5, 63.5, 0.0, 0.0, 1.0, 1.0, skew=1.5)})

@@ -50,8 +50,12 @@ case "$case_name" in
   threads)
     # The same hash for 1, 2, 3 and 8 threads and across repeated runs.
     for t in 1 2 3 8 2; do
+      # Each scene's image hash and every named output's.
       "$bin" render $(all_scenes) --threads "$t" --out "$work/t$t" |
-        sed -E 's/.*"hash":"([0-9A-Fa-f]+)".*"scene":"([^"]+)".*/\2 \1/' | sort >"$work/hashes.$t"
+        python3 -c 'import json,sys
+for line in sys.stdin:
+    j = json.loads(line)
+    print(j["scene"], j["hash"], *(o["name"] + "=" + o["hash"] for o in j["outputs"]))' | sort >"$work/hashes.$t"
     done
     for t in 1 3 8; do
       diff -u "$work/hashes.2" "$work/hashes.$t" || fail "hashes differ between 2 and $t threads"
@@ -112,6 +116,22 @@ case "$case_name" in
     expect_bad_input "unknown backend" "$bin" render triangles-basic --backend vulkan
     expect_bad_input "bad --set path" "$bin" render triangles-basic --set camera.fov=40
     expect_bad_input "compare unknown scene" "$bin" compare triangles-basic nope
+    # Textures, targets and passes (issue 9).
+    tp=conformance-two-pass-rgba16f
+    expect_bad_input "target no pass writes" "$bin" render $tp \
+      --set 'targets=[{"name":"lit","width":32,"height":32},{"name":"unused","width":4,"height":4}]'
+    expect_bad_input "pass reads its own target" "$bin" render $tp \
+      --set 'passes.0.textures=[{"sampler":"tex","target":"lit"}]'
+    expect_bad_input "texture reads an unknown target" "$bin" render $tp --set textures.0.target='"nope"'
+    expect_bad_input "pass writes an unknown target" "$bin" render $tp --set passes.0.target='"nope"'
+    expect_bad_input "viewport outside the target" "$bin" render $tp --set 'passes.0.viewport=[4,4,40,8]'
+    expect_bad_input "unknown target format" "$bin" render $tp --set targets.0.format='"rgb9"'
+    expect_bad_input "cube with non-square faces" "$bin" render conformance-cube-rgba8-linear --set textures.0.height=4
+    expect_bad_input "mip chain too long" "$bin" render conformance-mip-rgba8-linear-mip-linear --set textures.0.levels=9
+    expect_bad_input "unknown texture format" "$bin" render conformance-mip-rgba8-linear-mip-linear --set textures.0.format='"rgb9"'
+    expect_bad_input "unknown min filter" "$bin" render conformance-mip-rgba8-linear-mip-linear --set textures.0.min_filter='"cubic"'
+    expect_bad_input "unknown wrap" "$bin" render conformance-mip-rgba8-linear-mip-linear --set textures.0.wrap='"border"'
+    expect_bad_input "unknown blend factor" "$bin" render conformance-blend-one-one --set 'blend=["one","two"]'
     ;;
 
   bench_shape)

@@ -2,6 +2,8 @@
 // sizes included) and the RGBA16F store's rounding toward zero.
 #include "texture/mip_generation.h"
 
+#include <bit>
+
 #include <gtest/gtest.h>
 
 #include "texture/texel_formats.h"
@@ -55,6 +57,20 @@ TEST(TexelFormats, Rgba16fTruncatesTowardZero) {
     EXPECT_TRUE(std::signbit(rgba16f_stored(-0x1p-25f)));
     EXPECT_TRUE(std::isinf(rgba16f_stored(INFINITY)));
     EXPECT_TRUE(std::isnan(rgba16f_stored(NAN)));
+    // Measured on llvmpipe: 0x7FC12345 is stored as the half 0x7E09.
+    EXPECT_EQ(std::bit_cast<uint32_t>(rgba16f_stored(std::bit_cast<float>(0x7fc12345u))), 0x7fc12000u);
+    EXPECT_EQ(std::bit_cast<uint32_t>(rgba16f_stored(std::bit_cast<float>(0xff812345u))), 0xffc12000u);
+}
+
+TEST(TexelFormats, Rgba16fLanesMatchOneFloat) {
+    float v[kLanes];
+    for (uint32_t i = 0; i < 4000; ++i) {
+        for (int lane = 0; lane < kLanes; ++lane)
+            v[lane] = std::bit_cast<float>((i * 2654435761u + uint32_t(lane) * 40503u) ^ (i << 20));
+        const Float r = rgba16f_stored(Float::load(v));
+        for (int lane = 0; lane < kLanes; ++lane)
+            ASSERT_EQ(std::bit_cast<uint32_t>(r[lane]), std::bit_cast<uint32_t>(rgba16f_stored(v[lane]))) << v[lane];
+    }
 }
 
 }  // namespace st
