@@ -228,3 +228,35 @@ write("bloom-chain", {"kind": "conformance",
   "fragment": "sample_implicit", "blend": ["one", "one"],
   "textures": [{"sampler": "tex", "target": "blur", "min_filter": "linear_mipmap_linear", "mag_filter": "linear", "wrap": "clamp"}],
   "triangles": quad(0.5, 0.5, 63.5, 63.5, 0.0, 0.0, 1.0, 1.0, skew=1.5)})
+
+# The search loop of loop-exit on a mip chain: implicit LOD inside a loop
+# whose lanes leave at different passes (exited neighbours keep their
+# coordinates while the quad's LOD is taken).
+write("loop-exit-mip", {"kind": "conformance",
+  "description": "The search loop of loop-exit sampling a 32x32 rgba8 mip chain (linear_mipmap_linear) with implicit LOD inside the loop, lanes leaving at different passes.",
+  "width": 64, "height": 64, "fragment": "loop_exit",
+  "uniforms": [{"name": "steps", "int": 24}, {"name": "dir", "vec2": [0.031, 0.047]}, {"name": "threshold", "float": 0.8}],
+  "textures": [{"sampler": "tex", "format": "rgba8", "min_filter": "linear_mipmap_linear", "mag_filter": "linear",
+                "wrap": "repeat", "width": 32, "height": 32, "pattern": "noise", "seed": 51, "mipmaps": "distinct"}],
+  "triangles": quad(1.5, 2.25, 62.5, 61.75, -0.2, -0.1, 2.3, 2.2)})
+
+# Every filter x wrap x format, magnified and minified (the repeat wrap with
+# the four mip filters is above): 12x10 npot box chains for clamp and
+# mirrored repeat, 16x16 for repeat's two plain filters.
+for fmt in ["rgba8", "rgba32f", "rgba16f", "r32f"]:
+    for wrap in ["repeat", "clamp", "mirrored_repeat"]:
+        for mf in ["nearest", "linear", "nearest_mipmap_nearest", "linear_mipmap_nearest", "nearest_mipmap_linear",
+                   "linear_mipmap_linear"]:
+            if wrap == "repeat" and "mipmap" in mf:
+                continue  # conformance-mip-<format>-<filter>
+            if wrap != "repeat" and mf == "linear_mipmap_linear" and fmt in ("rgba8", "rgba32f"):
+                continue  # conformance-mip-<format>-wrap-<wrap>
+            mag = "linear" if mf.startswith("linear") else "nearest"
+            w, h = (16, 16) if wrap == "repeat" else (12, 10)
+            tag = f"{fmt}-{wrap.replace('_', '-')}-{mf.replace('_mipmap_', '-mip-').replace('_', '-')}"
+            write(f"filter-{tag}", {"kind": "conformance",
+              "description": f"texture() on a {fmt} {w}x{h} box chain, min {mf}, mag {mag}, wrap {wrap}: eight strips from magnified 2.5x to minified 17x.",
+              "width": 64, "height": 64, "fragment": "sample_implicit",
+              "textures": [{"sampler": "tex", "format": fmt, "min_filter": mf, "mag_filter": mag, "wrap": wrap,
+                            "width": w, "height": h, "pattern": "noise", "seed": 61, "mipmaps": "box"}],
+              "triangles": strips([s * 1.3 for s in scales])})
