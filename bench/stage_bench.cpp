@@ -12,7 +12,9 @@
 #include "raster/fragment_inputs.h"
 #include "raster/output_merge.h"
 #include "shading/block_layout.h"
+#include "texture/mip_generation.h"
 #include "texture/sampler2d.h"
+#include "texture/sampler_cube.h"
 #include "raster/tile_raster.h"
 #include "raster/triangle_setup.h"
 #include "raster/viewport.h"
@@ -103,18 +105,19 @@ BENCHMARK(BM_InterpolateBlock);
 
 // Depth-free blending of kLanes lanes into one framebuffer group pair, as
 // the output stage does it (load, blend, select, store).
-void BM_Blend(benchmark::State& state, BlendMode mode) {
+void BM_Blend(benchmark::State& state, BlendMode mode, BlendFactors factors = {}, bool rgba16f = false) {
     alignas(64) float colour[2][4 * kGroupLanes], depth[2][kGroupLanes] = {};
     for (auto& g : colour) std::fill(std::begin(g), std::end(g), 0.5f);
     const Vec4 src(Float(0.1f), Float(0.2f), Float(0.3f), Float(0.4f));
     DrawState ds;
     ds.blend = mode;
+    ds.factors = factors;
     const float* in_colour[2] = {colour[0], colour[1]};
     const float* in_depth[2] = {depth[0], depth[1]};
     float* out_colour[2] = {colour[0], colour[1]};
     float* out_depth[2] = {depth[0], depth[1]};
     for (auto _ : state) {
-        merge_lanes(ds, false, src, Float(0.5f), Mask(true), in_colour, in_depth, out_colour, out_depth);
+        merge_lanes(ds, rgba16f, src, Float(0.5f), Mask(true), in_colour, in_depth, out_colour, out_depth);
         benchmark::DoNotOptimize(colour);
     }
     state.SetItemsProcessed(int64_t(state.iterations()) * kLanes);
@@ -123,6 +126,13 @@ void BM_Blend(benchmark::State& state, BlendMode mode) {
 BENCHMARK_CAPTURE(BM_Blend, none, BlendMode::None);
 BENCHMARK_CAPTURE(BM_Blend, one_src_alpha, BlendMode::OneSrcAlpha);
 BENCHMARK_CAPTURE(BM_Blend, src_alpha_one_minus_src_alpha, BlendMode::SrcAlphaOneMinusSrcAlpha);
+BENCHMARK_CAPTURE(BM_Blend, factors_one_one, BlendMode::Factors, BlendFactors{BlendFactor::One, BlendFactor::One,
+                                                                               BlendFactor::One, BlendFactor::One});
+BENCHMARK_CAPTURE(BM_Blend, factors_src_colour_one_minus_dst_alpha, BlendMode::Factors,
+                  BlendFactors{BlendFactor::SrcColor, BlendFactor::OneMinusDstAlpha, BlendFactor::One,
+                               BlendFactor::Zero});
+BENCHMARK_CAPTURE(BM_Blend, rgba16f_one_one, BlendMode::Factors,
+                  BlendFactors{BlendFactor::One, BlendFactor::One, BlendFactor::One, BlendFactor::One}, true);
 
 Texture noise_texture(TextureFormat format, TextureFilter filter) {
     Texture t;
@@ -166,6 +176,94 @@ BENCHMARK_CAPTURE(BM_Sample, rgba8_nearest_random, TextureFormat::RGBA8, Texture
 BENCHMARK_CAPTURE(BM_Sample, rgba32f_linear_random, TextureFormat::RGBA32F, TextureFilter::Linear, true);
 BENCHMARK_CAPTURE(BM_Sample, rgba32f_linear_unscaled, TextureFormat::RGBA32F, TextureFilter::Linear, false);
 BENCHMARK_CAPTURE(BM_Sample, rgba32f_nearest_random, TextureFormat::RGBA32F, TextureFilter::Nearest, true);
+
+// texture() on a 256x256 box-filtered mip chain, minified: a 4x4 block
+// covers 3 texels per pixel of level 0 (LOD about 1.6, so LINEAR mip
+// filters blend levels 1 and 2), every format and min filter.
+Texture mip_texture(TextureFormat format, TextureFilter min, MipFilter mip, TextureWrap wrap) {
+    Texture t = noise_texture(format == TextureFormat::RGBA8 ? format : TextureFormat::RGBA32F, min);
+    t.format = format;
+    t.mag_filter = TextureFilter::Linear;
+    t.min_filter = min;
+    t.mip_filter = mip;
+    t.set_wrap(wrap);
+    generate_box_mips(t, full_chain_levels(t.width, t.height));
+    return t;
+}
+
+std::vector<Vec2> minified_uvs(float scale) {
+    std::vector<Vec2> uv(4096 / kLanes);
+    for (size_t i = 0; i < uv.size(); ++i)
+        for (int lane = 0; lane < kLanes; ++lane) {
+            const int block = int(i * kLanes / 16) % 4096, bx = block % 64 * 4, by = block / 64 % 64 * 4;
+            const int l = int(i * kLanes % 16) + lane;
+            uv[i].x.set(lane, (float(bx + block_lane_x(l)) + 0.5f) * scale / 256.0f);
+            uv[i].y.set(lane, (float(by + block_lane_y(l)) + 0.5f) * scale / 256.0f);
+        }
+    return uv;
+}
+
+void BM_SampleMip(benchmark::State& state, TextureFormat format, TextureFilter min, MipFilter mip, TextureWrap wrap) {
+    const Texture t = mip_texture(format, min, mip, wrap);
+    const Sampler2D s(t);
+    const std::vector<Vec2> uv = minified_uvs(3.0f);
+    for (auto _ : state)
+        for (const auto& c : uv) benchmark::DoNotOptimize(s.sample(c));
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(uv.size()) * kLanes);
+    state.SetLabel("samples");
+}
+#define ST_MIP_BENCH(fmt, F, min, mip, wrap)                                                                  \
+    BENCHMARK_CAPTURE(BM_SampleMip, fmt##_##min##_mip_##mip##_##wrap, TextureFormat::F, TextureFilter::min, \
+                      MipFilter::mip, TextureWrap::wrap)
+ST_MIP_BENCH(rgba8, RGBA8, Linear, Linear, Repeat);
+ST_MIP_BENCH(rgba8, RGBA8, Linear, Nearest, Repeat);
+ST_MIP_BENCH(rgba8, RGBA8, Nearest, Linear, Repeat);
+ST_MIP_BENCH(rgba8, RGBA8, Nearest, Nearest, Repeat);
+ST_MIP_BENCH(rgba8, RGBA8, Linear, Linear, MirroredRepeat);
+ST_MIP_BENCH(rgba32f, RGBA32F, Linear, Linear, Repeat);
+ST_MIP_BENCH(rgba32f, RGBA32F, Linear, Nearest, Repeat);
+ST_MIP_BENCH(rgba32f, RGBA32F, Nearest, Nearest, Repeat);
+ST_MIP_BENCH(rgba32f, RGBA32F, Linear, Linear, ClampToEdge);
+ST_MIP_BENCH(rgba16f, RGBA16F, Linear, Linear, Repeat);
+ST_MIP_BENCH(r32f, R32F, Linear, Linear, Repeat);
+#undef ST_MIP_BENCH
+
+// textureLod with a LOD per lane across levels 0..4.
+void BM_SampleLod(benchmark::State& state, TextureFormat format) {
+    const Texture t = mip_texture(format, TextureFilter::Linear, MipFilter::Linear, TextureWrap::Repeat);
+    const Sampler2D s(t);
+    const std::vector<Vec2> uv = minified_uvs(1.0f);
+    Float lod;
+    for (int lane = 0; lane < kLanes; ++lane) lod.set(lane, float(lane % 9) * 0.5f);
+    for (auto _ : state)
+        for (const auto& c : uv) benchmark::DoNotOptimize(s.sample_lod(c, lod));
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(uv.size()) * kLanes);
+    state.SetLabel("samples");
+}
+BENCHMARK_CAPTURE(BM_SampleLod, rgba8_trilinear, TextureFormat::RGBA8);
+BENCHMARK_CAPTURE(BM_SampleLod, rgba32f_trilinear, TextureFormat::RGBA32F);
+
+// A seamless cube map (64x64 faces, full chain), trilinear, directions
+// sweeping two faces and their edge.
+void BM_SampleCube(benchmark::State& state, TextureFormat format) {
+    Texture t = noise_texture(format == TextureFormat::RGBA8 ? format : TextureFormat::RGBA32F, TextureFilter::Linear);
+    t.format = format;
+    t.cube = true;
+    t.width = t.height = 64;
+    const size_t face = 64 * 64 * 4;
+    if (format == TextureFormat::RGBA8) t.texels8.resize(6 * face);
+    else t.texels32.resize(6 * face);
+    t.mip_filter = MipFilter::Linear;
+    generate_box_mips(t, full_chain_levels(64, 64));
+    const SamplerCube s(t);
+    const std::vector<Vec2> uv = minified_uvs(1.0f);
+    for (auto _ : state)
+        for (const auto& c : uv) benchmark::DoNotOptimize(s.sample(Vec3(c.x * 2.0f - 1.0f, c.y - 0.5f, Float(0.7f))));
+    state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(uv.size()) * kLanes);
+    state.SetLabel("samples");
+}
+BENCHMARK_CAPTURE(BM_SampleCube, rgba8_seamless_trilinear, TextureFormat::RGBA8);
+BENCHMARK_CAPTURE(BM_SampleCube, rgba32f_seamless_trilinear, TextureFormat::RGBA32F);
 
 }  // namespace
 }  // namespace st
