@@ -39,24 +39,26 @@ using Level = Sampler2D::LevelLanes;
 // for a texture that is not mirrored on the screen), and is 8 texels by 2
 // rows for each row of taps. The four tables of a call (each group's two rows
 // under v.i0 and under v.i1) make two 32-entry permutes per tap row.
-bool fetch_window_groups(const int32_t* rgba8, int width, int height, const LinearTaps8& u, const LinearTaps8& v,
+ST_INLINE bool fetch_window_groups(const int32_t* rgba8, int width, int height, const LinearTaps8& u, const LinearTaps8& v,
                          Int& t00, Int& t10, Int& t01, Int& t11) {
     const __m512i lane0_of_group = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
-    auto group_base = [&](Int x) { return Int(IntV(_mm512_permutexvar_epi32(lane0_of_group, __m512i(x.v)))); };
+    auto group_base = [&](Int x) __attribute__((always_inline)) {
+        return Int(IntV(_mm512_permutexvar_epi32(lane0_of_group, __m512i(x.v))));
+    };
     const Int u_base = group_base(u.i0), v0_base = group_base(v.i0), v1_base = group_base(v.i1);
     const Int x0 = u.i0 - u_base, x1 = u.i1 - u_base, y0 = v.i0 - v0_base, y1 = v.i1 - v1_base;
     using UV = uint32_t __attribute__((vector_size(64)));
-    const auto outside = [](Int d, uint32_t n) { return __m512i(IntV(UV(d.v) >= n)); };
+    const auto outside = [](Int d, uint32_t n) __attribute__((always_inline)) { return __m512i(IntV(UV(d.v) >= n)); };
     const __m512i bad = _mm512_or_si512(_mm512_or_si512(outside(x0, 8), outside(x1, 8)),
                                         _mm512_or_si512(outside(y0, 2), outside(y1, 2)));
     if (_mm512_test_epi32_mask(bad, bad)) return false;
     // Row r of group g's window under base row b: 8 texels from its u_base.
-    auto row = [&](int g, int32_t b, int r) {
+    auto row = [&](int g, int32_t b, int r) __attribute__((always_inline)) {
         const int32_t y = std::min(b + r, height - 1);  // a row past the edge is loaded but never picked
         return _mm256_loadu_si256(
             reinterpret_cast<const __m256i*>(&rgba8[size_t(y) * size_t(width) + size_t(u_base[8 * g])]));
     };
-    auto table = [&](const Int& base, __m512i& lo, __m512i& hi) {
+    auto table = [&](const Int& base, __m512i& lo, __m512i& hi) __attribute__((always_inline)) {
         // lo = row 0 of both groups, hi = row 1: entry r * 16 + g * 8 + x.
         lo = _mm512_inserti64x4(_mm512_castsi256_si512(row(0, base[0], 0)), row(1, base[8], 0), 1);
         hi = _mm512_inserti64x4(_mm512_castsi256_si512(row(0, base[0], 1)), row(1, base[8], 1), 1);
@@ -65,7 +67,7 @@ bool fetch_window_groups(const int32_t* rgba8, int width, int height, const Line
     table(v0_base, a_lo, a_hi);
     table(v1_base, b_lo, b_hi);
     const __m512i group8 = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
-    auto index = [&](Int y, Int x) {
+    auto index = [&](Int y, Int x) __attribute__((always_inline)) {
         return _mm512_add_epi32(_mm512_add_epi32(__m512i((y << 4).v), group8), __m512i(x.v));
     };
     t00 = Int(IntV(_mm512_permutex2var_epi32(a_lo, index(y0, x0), a_hi)));
@@ -76,7 +78,7 @@ bool fetch_window_groups(const int32_t* rgba8, int width, int height, const Line
 }
 #endif
 
-bool fetch_window(const int32_t* rgba8, int width, const LinearTaps8& u, const LinearTaps8& v, Int& t00, Int& t10,
+ST_INLINE bool fetch_window(const int32_t* rgba8, int width, const LinearTaps8& u, const LinearTaps8& v, Int& t00, Int& t10,
                   Int& t01, Int& t11) {
     constexpr int kWindowRows = 6;
     const int32_t u_lo = simd::reduce_min(simd::min(u.i0, u.i1)), u_hi = simd::reduce_max(simd::max(u.i0, u.i1));
@@ -139,7 +141,7 @@ Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
     }
 }
 
-Sampler2D::LevelLanes Sampler2D::level_lanes(Int level) const {
+ST_INLINE Sampler2D::LevelLanes Sampler2D::level_lanes(Int level) const {
     // level is in [0, last_level_] on every lane.
     LevelLanes l;
     if (last_level_ == 0) {
@@ -157,7 +159,7 @@ Sampler2D::LevelLanes Sampler2D::level_lanes(Int level) const {
     return l;
 }
 
-Vec4 Sampler2D::texel(const LevelLanes& level, Int x, Int y) const {
+ST_INLINE Vec4 Sampler2D::texel(const LevelLanes& level, Int x, Int y) const {
     // Taps are inside their level by construction (wrapped or clamped)
     // except the npot REPEAT taps of a NaN coordinate, whose weight is NaN
     // anyway: those read 0, never outside the texels.
@@ -197,7 +199,7 @@ glm::vec4 Sampler2D::sample(const glm::vec2& st) const {
 }
 
 // The filter within one level, float SoA (§3.1).
-Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter,
+ST_INLINE Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter,
                               Mask as_nearest) const {
     if (filter == TextureFilter::Nearest)
         return texel(level, nearest_texel(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s, false),
@@ -224,7 +226,9 @@ Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, TextureFil
 // The filter within one level, 8-bit AoS (§3.2): the result as byte pairs,
 // rb = R | B << 16 and ga = G | A << 16, before conversion to float. With
 // level0 (every lane on level 0) the texel windows replace the gathers.
-void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, Int& rb,
+// Its helpers and lambdas are forced inline: out of line, their vectors go
+// through memory, which cost 40 % of the unscaled RGBA8 rate (microbench).
+ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, Int& rb,
                               Int& ga) const {
     const int32_t* texels = rgba8_.data();
     if (filter == TextureFilter::Nearest) {
@@ -262,13 +266,16 @@ void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFi
     // Two channels per lane, one in each 16-bit half (R and B, then G and
     // A), lerped at once.
     const Int wu = u.weight | (u.weight << 16), wv = v.weight | (v.weight << 16);
-    auto pairs = [&](auto half_bytes) {
+    // Inlined by hand (a lambda here stays out of line and spills its
+    // vectors): R and B with shift 0, G and A with shift 8.
+    auto pairs = [&](int shift) __attribute__((always_inline)) {
+        auto half_bytes = [shift](Int t) __attribute__((always_inline)) { return (t >> shift) & Int(0x00ff00ff); };
         const Int bottom = lerp8_pairs(wu, half_bytes(t00), half_bytes(t10));
         const Int top = lerp8_pairs(wu, half_bytes(t01), half_bytes(t11));
         return lerp8_pairs(wv, bottom, top);
     };
-    rb = pairs([](Int t) { return red_blue(t); });
-    ga = pairs([](Int t) { return green_alpha(t); });
+    rb = pairs(0);
+    ga = pairs(8);
 }
 
 // min == mag: the one filter at the chosen levels.
@@ -346,12 +353,12 @@ Vec4 Sampler2D::sample_levels(const Vec2& st, const LevelChoice& c, bool per_qua
     return select(linear_vectors, linear, nearest);
 }
 
-bool Sampler2D::needs_lod() const {
+ST_INLINE bool Sampler2D::needs_lod() const {
     return mip_filter_ != MipFilter::None || tex_->min_filter != tex_->mag_filter;
 }
 
 // One level, one filter: no LOD at all, whatever the op (§1.1).
-Vec4 Sampler2D::sample_base(const Vec2& st) const {
+ST_INLINE Vec4 Sampler2D::sample_base(const Vec2& st) const {
     const LevelLanes l0 = level_lanes(Int(0));
     if (!aos_) return filter_float(st, l0, tex_->mag_filter, Mask(false));
     Int rb, ga;
