@@ -260,3 +260,16 @@ for fmt in ["rgba8", "rgba32f", "rgba16f", "r32f"]:
               "textures": [{"sampler": "tex", "format": fmt, "min_filter": mf, "mag_filter": mag, "wrap": wrap,
                             "width": w, "height": h, "pattern": "noise", "seed": 61, "mipmaps": "box"}],
               "triangles": strips([s * 1.3 for s in scales])})
+
+# A texture() with implicit LOD on each side of a divergent branch, on mip
+# chains: the coordinates are computed inside the branch (NIR SSA values),
+# so a quad's inactive lanes contribute their own, as the twin computes them.
+write("branch-texture-mip", {"kind": "conformance",
+  "description": "branch-texture on mip chains: implicit-LOD texture() on both sides of a divergent branch (rgba8 trilinear, rgba32f nearest-mip-nearest), quads split by the branch.",
+  "width": 64, "height": 64, "fragment": "branch_texture",
+  "uniforms": [{"name": "split", "float": 0.8}],
+  "textures": [{"sampler": "tex_a", "format": "rgba8", "min_filter": "linear_mipmap_linear", "mag_filter": "linear",
+                "wrap": "repeat", "width": 32, "height": 32, "pattern": "noise", "seed": 71, "mipmaps": "distinct"},
+               {"sampler": "tex_b", "format": "rgba32f", "min_filter": "nearest_mipmap_nearest", "mag_filter": "nearest",
+                "wrap": "clamp", "width": 24, "height": 20, "pattern": "noise", "seed": 72, "mipmaps": "distinct"}],
+  "triangles": quad(2.5, 1.5, 61.5, 62.5, -0.1, -0.1, 3.1, 4.1)})
