@@ -64,6 +64,8 @@ struct Texture {
     TextureFilter min_filter = TextureFilter::Linear;
     MipFilter mip_filter = MipFilter::None;
     TextureWrap wrap_s = TextureWrap::Repeat, wrap_t = TextureWrap::Repeat;
+    // GL_TEXTURE_LOD_BIAS, GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD (GL's defaults).
+    float lod_bias = 0.0f, min_lod = -1000.0f, max_lod = 1000.0f;
     int width = 0, height = 0;
     std::vector<uint8_t> texels8;   // RGBA8: width*height*4, row 0 = t near 0
     std::vector<float> texels32;    // float formats: width*height*4

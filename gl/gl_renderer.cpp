@@ -163,6 +163,9 @@ void upload_texture(const Texture& tex) {
     glTexParameteri(target, GL_TEXTURE_MAG_FILTER, gl_mag_filter(tex.mag_filter));
     glTexParameteri(target, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap_s));
     glTexParameteri(target, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap_t));
+    glTexParameterf(target, GL_TEXTURE_LOD_BIAS, tex.lod_bias);
+    glTexParameterf(target, GL_TEXTURE_MIN_LOD, tex.min_lod);
+    glTexParameterf(target, GL_TEXTURE_MAX_LOD, tex.max_lod);
 }
 
 void set_uniform(GLuint program, const Uniform& u) {
@@ -365,6 +368,9 @@ void GlRenderer::prepare(const Frame& frame) {
                     glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, gl_mag_filter(tex.mag_filter));
                     glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap_s));
                     glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap_t));
+                    glSamplerParameterf(sampler, GL_TEXTURE_LOD_BIAS, tex.lod_bias);
+                    glSamplerParameterf(sampler, GL_TEXTURE_MIN_LOD, tex.min_lod);
+                    glSamplerParameterf(sampler, GL_TEXTURE_MAX_LOD, tex.max_lod);
                 } else {
                     glGenTextures(1, &name);
                     glBindTexture(gl_target(tex), name);

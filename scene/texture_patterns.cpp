@@ -88,6 +88,9 @@ Texture read_pattern_texture(JsonReader& r, const std::string& sampler) {
                                          "nearest_mipmap_linear", "linear_mipmap_linear"});
     t.min_filter = filter_named(min);
     t.mip_filter = mip_filter_named(min);
+    t.lod_bias = float(r.number_or("lod_bias", 0.0, -1000.0, 1000.0));
+    t.min_lod = float(r.number_or("min_lod", -1000.0, -1000.0, 1000.0));
+    t.max_lod = float(r.number_or("max_lod", 1000.0, -1000.0, 1000.0));
     if (r.has("target")) {
         // A render target: its size, format and levels are the target's.
         t.target = r.string("target");

@@ -273,3 +273,23 @@ write("branch-texture-mip", {"kind": "conformance",
                {"sampler": "tex_b", "format": "rgba32f", "min_filter": "nearest_mipmap_nearest", "mag_filter": "nearest",
                 "wrap": "clamp", "width": 24, "height": 20, "pattern": "noise", "seed": 72, "mipmaps": "distinct"}],
   "triangles": quad(2.5, 1.5, 61.5, 62.5, -0.1, -0.1, 3.1, 4.1)})
+
+# Sampler state that shapes the LOD: GL_TEXTURE_LOD_BIAS (quantized to
+# 1/256), MIN_LOD/MAX_LOD clamps, MIN_LOD == MAX_LOD (the LOD fixed).
+for fmt in ["rgba8", "rgba32f"]:
+    for name, state in [("bias", {"lod_bias": 0.3}), ("clamp", {"min_lod": 1.25, "max_lod": 2.5}),
+                        ("fixed", {"min_lod": 1.5, "max_lod": 1.5}), ("negative-bias", {"lod_bias": -1.7, "max_lod": 3.0})]:
+        for mf in ["linear_mipmap_linear", "nearest_mipmap_nearest"]:
+            mag = "linear" if mf.startswith("linear") else "nearest"
+            tag = f"{fmt}-{name}-{mf.replace('_mipmap_', '-mip-').replace('_', '-')}"
+            tex = dict({"sampler": "tex", "format": fmt, "min_filter": mf, "mag_filter": mag, "wrap": "repeat",
+                        "width": 16, "height": 16, "pattern": "noise", "seed": 81, "mipmaps": "distinct"}, **state)
+            write(f"lod-state-{tag}", {"kind": "conformance",
+              "description": f"texture() with sampler state {state} on a {fmt} 16x16 chain, min {mf}.",
+              "width": 64, "height": 64, "fragment": "sample_implicit", "textures": [tex],
+              "triangles": strips(scales)})
+            write(f"lod-state-lod-{tag}", {"kind": "conformance",
+              "description": f"textureLod() from -1.5 to 5.5 with sampler state {state} on a {fmt} 16x16 chain, min {mf}.",
+              "width": 64, "height": 64, "fragment": "sample_lod",
+              "uniforms": [{"name": "lod_min", "float": -1.5}, {"name": "lod_max", "float": 5.5}],
+              "textures": [tex], "triangles": strips([1.0] * 8, lod_cols=True)})

@@ -7,9 +7,11 @@
 
 #include "frame/frame.h"
 #include "simd/lane_vec.h"
+#include "texture/lod_state.h"
 #include "texture/texel_math.h"
 
 namespace st::texel {
+
 
 // The levels one sample reads and how it weighs them (§2.6), and whether
 // it is minified (§2.7).
@@ -57,8 +59,10 @@ inline LevelChoice choose_levels(Float lod, MipFilter mip_filter, int last_level
 // GL's default state takes the exponent shortcut for NEAREST and NONE mip
 // filters, round_half_up(log2 rho), and minifies where rho^2 > 1
 // (unordered); LINEAR goes through 0.5 * fast_log2 (§2.4).
-inline LevelChoice choose_from_rho2(Float rho2, MipFilter mip_filter, int last_level) {
-    if (mip_filter == MipFilter::Linear) return choose_levels(half_fast_log2(rho2), mip_filter, last_level);
+inline LevelChoice choose_from_rho2(Float rho2, MipFilter mip_filter, int last_level, const LodState& state) {
+    if (state.equal) return choose_levels(Float(state.min_lod), mip_filter, last_level);
+    if (mip_filter == MipFilter::Linear || !state.plain())
+        return choose_levels(state.adjust(half_fast_log2(rho2)), mip_filter, last_level);
     LevelChoice c;
     const Int exponent = (simd::bit_cast_int(rho2) >> 23) & Int(255);
     const Int ipart = (exponent - Int(126)) >> 1;

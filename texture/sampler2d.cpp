@@ -107,6 +107,7 @@ Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
     last_level_ = int(texture.mips.size());
     // A texture with one level has no mip filter (level_zero_only).
     mip_filter_ = last_level_ == 0 ? MipFilter::None : texture.mip_filter;
+    lod_ = LodState::of(texture);
     pot_w_ = is_pot(texture.width);
     pot_h_ = is_pot(texture.height);
     auto simple_wrap = [](TextureWrap w) { return w == TextureWrap::Repeat || w == TextureWrap::ClampToEdge; };
@@ -380,18 +381,18 @@ Float Sampler2D::quad_rho2(const Vec2& st) const {
 
 Vec4 Sampler2D::sample(const Vec2& st) const {
     if (!needs_lod()) return sample_base(st);
-    return sample_levels(st, choose_from_rho2(quad_rho2(st), mip_filter_, last_level_), true);
+    return sample_levels(st, choose_from_rho2(quad_rho2(st), mip_filter_, last_level_, lod_), true);
 }
 
 Vec4 Sampler2D::sample_bias(const Vec2& st, Float bias) const {
     if (!needs_lod()) return sample_base(st);
     // The quad's LOD plus each lane's bias: no shortcut (§2.4 step 3).
-    return sample_levels(st, choose_levels(half_fast_log2(quad_rho2(st)) + bias, mip_filter_, last_level_), false);
+    return sample_levels(st, choose_levels(lod_.requested(half_fast_log2(quad_rho2(st)) + bias), mip_filter_, last_level_), false);
 }
 
 Vec4 Sampler2D::sample_lod(const Vec2& st, Float lod) const {
     if (!needs_lod()) return sample_base(st);
-    return sample_levels(st, choose_levels(lod, mip_filter_, last_level_), false);
+    return sample_levels(st, choose_levels(lod_.requested(lod), mip_filter_, last_level_), false);
 }
 
 Vec4 Sampler2D::sample_grad(const Vec2& st, const Vec2& dx, const Vec2& dy) const {
@@ -404,7 +405,7 @@ Vec4 Sampler2D::sample_grad(const Vec2& st, const Vec2& dx, const Vec2& dy) cons
     Float rho2 = maxps(a + c, b + d);
     const Mask special = (simd::bit_cast_int(rho2) & Int(0x7f800000)) == Int(0x7f800000);
     rho2 = select(special, Float(0.0f), rho2);
-    return sample_levels(st, choose_from_rho2(rho2, mip_filter_, last_level_), false);
+    return sample_levels(st, choose_from_rho2(rho2, mip_filter_, last_level_, lod_), false);
 }
 
 Int Sampler2D::size_x(Int lod) const { return texture_size(lod, true); }

@@ -13,6 +13,7 @@
 
 #include "frame/frame.h"
 #include "simd/lane_vec.h"
+#include "texture/lod_state.h"
 
 namespace st {
 
@@ -80,6 +81,7 @@ private:
     bool aos_ = false;        // RGBA8 with REPEAT/CLAMP_TO_EDGE: llvmpipe's 8-bit path
     bool pot_w_ = true, pot_h_ = true;
     MipFilter mip_filter_ = MipFilter::None;
+    texel::LodState lod_;
     std::vector<int32_t> level_width_, level_height_, level_base_;
     // RGBA8 texels of every level as one int32 each (little-endian: R in the
     // low byte), and kLanes more, so that a texel and its right neighbour

@@ -81,6 +81,7 @@ struct SamplerCube::Face {
 SamplerCube::SamplerCube(const Texture& texture) : tex_(&texture) {
     last_level_ = int(texture.mips.size());
     mip_filter_ = last_level_ == 0 ? MipFilter::None : texture.mip_filter;
+    lod_ = LodState::of(texture);
     aos_ = texture.format == TextureFormat::RGBA8 && texture.min_filter == TextureFilter::Nearest;
     size_t texels = 0;
     for (int l = 0; l <= last_level_; ++l) {
@@ -244,7 +245,7 @@ Vec4 SamplerCube::sample_lod(const Vec3& dir, Float lod) const {
     f.t = f.tc * k + Float(0.5f);
     const bool needs_lod = mip_filter_ != MipFilter::None;
     if (!needs_lod) return sample_at(f, choose_levels(Float(0.0f), MipFilter::None, last_level_));
-    return sample_at(f, choose_levels(lod, mip_filter_, last_level_));
+    return sample_at(f, choose_levels(lod_.requested(lod), mip_filter_, last_level_));
 }
 
 Vec4 SamplerCube::sample(const Vec3& dir) const {
@@ -273,7 +274,7 @@ Vec4 SamplerCube::sample(const Vec3& dir) const {
     Float rho2 = maxps(rho_part(ddx), rho_part(ddy));
     const Mask special = (simd::bit_cast_int(rho2) & Int(0x7f800000)) == Int(0x7f800000);
     rho2 = select(special, Float(0.0f), rho2);
-    return sample_at(f, choose_from_rho2(rho2, mip_filter_, last_level_));
+    return sample_at(f, choose_from_rho2(rho2, mip_filter_, last_level_, lod_));
 }
 
 }  // namespace st

@@ -11,6 +11,7 @@
 
 #include "frame/frame.h"
 #include "simd/lane_vec.h"
+#include "texture/lod_state.h"
 
 namespace st {
 
@@ -41,6 +42,7 @@ private:
     const Texture* tex_;
     int last_level_ = 0;
     MipFilter mip_filter_ = MipFilter::None;
+    texel::LodState lod_;
     bool aos_ = false;  // RGBA8 NEAREST: llvmpipe's 8-bit path
     std::vector<int32_t> level_size_, level_base_;
     std::vector<int32_t> rgba8_;
