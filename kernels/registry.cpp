@@ -53,6 +53,8 @@ const std::map<std::string, Factory<FragmentTwin>>& fragment_twins() {
         {"texel_fetch", [] { return std::make_unique<TexelFetchFragment>(); }},
         {"sample_cube", [] { return std::make_unique<SampleCubeFragment>(); }},
         {"sample_cube_lod", [] { return std::make_unique<SampleCubeLodFragment>(); }},
+        {"sample_cube_bias", [] { return std::make_unique<SampleCubeBiasFragment>(); }},
+        {"sample_cube_grad", [] { return std::make_unique<SampleCubeGradFragment>(); }},
     };
     return twins;
 }

@@ -293,3 +293,21 @@ for fmt in ["rgba8", "rgba32f"]:
               "width": 64, "height": 64, "fragment": "sample_lod",
               "uniforms": [{"name": "lod_min", "float": -1.5}, {"name": "lod_max", "float": 5.5}],
               "textures": [tex], "triangles": strips([1.0] * 8, lod_cols=True)})
+
+# Cube maps with a bias and with textureGrad.
+for fmt in ["rgba8", "rgba32f"]:
+    for mf in ["linear_mipmap_linear", "nearest_mipmap_nearest"]:
+        mag = "linear" if mf.startswith("linear") else "nearest"
+        tag = f"{fmt}-{mf.replace('_mipmap_', '-mip-').replace('_', '-')}"
+        env = {"sampler": "env", "cube": True, "format": fmt, "min_filter": mf, "mag_filter": mag, "wrap": "clamp",
+               "width": 8, "height": 8, "pattern": "noise", "seed": 91, "mipmaps": "distinct"}
+        write(f"cube-bias-{tag}", {"kind": "conformance",
+          "description": f"texture() with a per-pixel bias from -1.5 to 2.5 on a seamless {fmt} cube map, min {mf}.",
+          "width": 64, "height": 64, "fragment": "sample_cube_bias",
+          "uniforms": [{"name": "lod_min", "float": -1.5}, {"name": "lod_max", "float": 2.5}],
+          "textures": [env], "triangles": cube_quads(lod_cols=True)})
+        write(f"cube-grad-{tag}", {"kind": "conformance",
+          "description": f"textureGrad() with per-pixel scaled derivatives on a seamless {fmt} cube map, min {mf}.",
+          "width": 64, "height": 64, "fragment": "sample_cube_grad",
+          "uniforms": [{"name": "grad_scale", "float": 6.0}],
+          "textures": [env], "triangles": cube_quads(lod_cols=True)})

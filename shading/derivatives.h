@@ -16,6 +16,8 @@ ST_INLINE Float dFdy(Float v) { return simd::quad_ddy(v); }
 ST_INLINE Float fwidth(Float v) { return simd::abs(dFdx(v)) + simd::abs(dFdy(v)); }
 ST_INLINE Vec2 dFdx(const Vec2& v) { return {dFdx(v.x), dFdx(v.y)}; }
 ST_INLINE Vec2 dFdy(const Vec2& v) { return {dFdy(v.x), dFdy(v.y)}; }
+ST_INLINE Vec3 dFdx(const Vec3& v) { return {dFdx(v.x), dFdx(v.y), dFdx(v.z)}; }
+ST_INLINE Vec3 dFdy(const Vec3& v) { return {dFdy(v.x), dFdy(v.y), dFdy(v.z)}; }
 ST_INLINE Vec4 dFdx(const Vec4& v) { return {dFdx(v.x), dFdx(v.y), dFdx(v.z), dFdx(v.w)}; }
 ST_INLINE Vec4 dFdy(const Vec4& v) { return {dFdy(v.x), dFdy(v.y), dFdy(v.z), dFdy(v.w)}; }
 

@@ -248,17 +248,15 @@ Vec4 SamplerCube::sample_lod(const Vec3& dir, Float lod) const {
     return sample_at(f, choose_levels(lod_.requested(lod), mip_filter_, last_level_));
 }
 
-Vec4 SamplerCube::sample(const Vec3& dir) const {
-    if (mip_filter_ == MipFilter::None) return sample_lod(dir, Float(0.0f));
-    // Projection with derivatives (§5.3) and the per-pixel rho of §5.4.
-    Face f = select_face(dir);
+// Projection with derivatives (§5.3) and the per-pixel rho^2 of §5.4 from
+// the direction's derivatives ddx, ddy, taken through the lane's face.
+Float SamplerCube::project_rho2(const Vec3& dir, const Vec3& ddx, const Vec3& ddy, Face& f) const {
+    f = select_face(dir);
     const Float ima = Float(1.0f) / f.ma;
     const Float ih = Float(0.5f) * ima;
     const Float k = simd::abs(ih);
     f.s = f.sc * k + Float(0.5f);
     f.t = f.tc * k + Float(0.5f);
-    const Vec3 ddx(simd::quad_ddx(dir.x), simd::quad_ddx(dir.y), simd::quad_ddx(dir.z));
-    const Vec3 ddy(simd::quad_ddy(dir.x), simd::quad_ddy(dir.y), simd::quad_ddy(dir.z));
     const Float w(float(tex_->width));
     auto rho_part = [&](const Vec3& dd) {
         const Mask x = f.axis == Int(0), y = f.axis == Int(1);
@@ -271,9 +269,34 @@ Vec4 SamplerCube::sample(const Vec3& dir) const {
         b = w * b;
         return a * a + b * b;
     };
-    Float rho2 = maxps(rho_part(ddx), rho_part(ddy));
+    const Float rho2 = maxps(rho_part(ddx), rho_part(ddy));
     const Mask special = (simd::bit_cast_int(rho2) & Int(0x7f800000)) == Int(0x7f800000);
-    rho2 = select(special, Float(0.0f), rho2);
+    return select(special, Float(0.0f), rho2);
+}
+
+namespace {
+Vec3 quad_ddx(const Vec3& v) { return {simd::quad_ddx(v.x), simd::quad_ddx(v.y), simd::quad_ddx(v.z)}; }
+Vec3 quad_ddy(const Vec3& v) { return {simd::quad_ddy(v.x), simd::quad_ddy(v.y), simd::quad_ddy(v.z)}; }
+}  // namespace
+
+Vec4 SamplerCube::sample(const Vec3& dir) const {
+    if (mip_filter_ == MipFilter::None) return sample_lod(dir, Float(0.0f));
+    Face f;
+    const Float rho2 = project_rho2(dir, quad_ddx(dir), quad_ddy(dir), f);
+    return sample_at(f, choose_from_rho2(rho2, mip_filter_, last_level_, lod_));
+}
+
+Vec4 SamplerCube::sample_bias(const Vec3& dir, Float bias) const {
+    if (mip_filter_ == MipFilter::None) return sample_lod(dir, Float(0.0f));
+    Face f;
+    const Float rho2 = project_rho2(dir, quad_ddx(dir), quad_ddy(dir), f);
+    return sample_at(f, choose_levels(lod_.requested(half_fast_log2(rho2) + bias), mip_filter_, last_level_));
+}
+
+Vec4 SamplerCube::sample_grad(const Vec3& dir, const Vec3& dpdx, const Vec3& dpdy) const {
+    if (mip_filter_ == MipFilter::None) return sample_lod(dir, Float(0.0f));
+    Face f;
+    const Float rho2 = project_rho2(dir, dpdx, dpdy, f);
     return sample_at(f, choose_from_rho2(rho2, mip_filter_, last_level_, lod_));
 }
 

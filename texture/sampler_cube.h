@@ -28,12 +28,17 @@ public:
 
     // GLSL texture(samplerCube, vec3): LOD per pixel from the quad.
     Vec4 sample(const Vec3& dir) const;
+    // GLSL texture(samplerCube, vec3, float bias): the pixel's LOD plus the bias.
+    Vec4 sample_bias(const Vec3& dir, Float bias) const;
     // GLSL textureLod(samplerCube, vec3, float).
     Vec4 sample_lod(const Vec3& dir, Float lod) const;
+    // GLSL textureGrad(samplerCube, vec3, vec3 dPdx, vec3 dPdy).
+    Vec4 sample_grad(const Vec3& dir, const Vec3& dpdx, const Vec3& dpdy) const;
 
     struct Face;
 
 private:
+    Float project_rho2(const Vec3& dir, const Vec3& ddx, const Vec3& ddy, Face& f) const;
     Vec4 sample_at(const Face& f, const texel::LevelChoice& c) const;
     Vec4 filter_level(const Face& f, Int level) const;
     void nearest_unorm8(const Face& f, Int level, Int& rb, Int& ga) const;

@@ -156,4 +156,29 @@ private:
     float lod_min_ = 0.0f, lod_max_ = 0.0f;
 };
 
+class SampleCubeBiasFragment final : public FragmentProgram<SampleCubeBiasFragment> {  // sample_cube_bias.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    const SamplerCube* env_ = nullptr;
+    float lod_min_ = 0.0f, lod_max_ = 0.0f;
+};
+
+class SampleCubeGradFragment final : public FragmentProgram<SampleCubeGradFragment> {  // sample_cube_grad.frag
+public:
+    void bind(const Bindings& b) override {
+        env_ = &b.sampler_cube("env");
+        grad_scale_ = b.get_float("grad_scale");
+    }
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    const SamplerCube* env_ = nullptr;
+    float grad_scale_ = 0.0f;
+};
+
 }  // namespace st
