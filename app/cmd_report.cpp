@@ -107,9 +107,22 @@ std::string html(const std::vector<SceneComparison>& results, const std::string&
           << c.coverage_diff_png << "\"><figcaption>coverage difference</figcaption></figure></div><table>";
         const nlohmann::json j = to_json(c);
         for (const auto& [key, value] : j.items())
-            if (key != "failures" && key != "scene")
+            if (key != "failures" && key != "scene" && key != "outputs")
                 h << "<tr><th>" << html_escape(key) << "</th><td>" << html_escape(value.dump()) << "</td></tr>";
-        h << "</table></section>";
+        h << "</table>";
+        // Each named output (a render target's level) as the image is shown.
+        for (const auto& o : c.outputs) {
+            h << "<h3>" << html_escape(o.name) << " <span class=\""
+              << (o.failures.empty() ? "pass\">pass" : "fail\">FAIL") << "</span></h3>";
+            for (const auto& f : o.failures) h << "<p class=\"fail\">" << html_escape(f) << "</p>";
+            h << "<div><figure style=\"display:inline-block\"><img src=\"" << o.cpu_png
+              << "\"><figcaption>cpu</figcaption></figure><figure style=\"display:inline-block\"><img src=\""
+              << o.gl_png << "\"><figcaption>gl (llvmpipe)</figcaption></figure><figure style=\"display:inline-block\">"
+              << "<img src=\"" << o.diff_png << "\"><figcaption>difference</figcaption></figure></div>"
+              << "<p>identical_fraction_float " << o.metrics.identical_fraction_float << ", max_diff_8bit "
+              << o.metrics.max_diff_8bit << ", max_rel_diff_float " << o.metrics.max_rel_diff_float << "</p>";
+        }
+        h << "</section>";
     }
     if (!cost.empty()) h << "<section><h2>Cost</h2><pre>" << html_escape(cost) << "</pre></section>";
     h << "</body></html>\n";
