@@ -225,8 +225,9 @@ ST_INLINE Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, 
 }
 
 // The filter within one level, 8-bit AoS (§3.2): the result as byte pairs,
-// rb = R | B << 16 and ga = G | A << 16, before conversion to float. With
-// level0 (every lane on level 0) the texel windows replace the gathers.
+// rb = R | B << 16 and ga = G | A << 16, before conversion to float. When
+// every lane reads one level (level0 says it is level 0) the texel windows
+// replace the gathers.
 // Its helpers and lambdas are forced inline: out of line, their vectors go
 // through memory, which cost 40 % of the unscaled RGBA8 rate (microbench).
 ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, Int& rb,
@@ -246,12 +247,17 @@ ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level,
     // joins them otherwise; those lanes are fetched again.
     Int t00, t10, t01, t11;
     bool windowed = false;
-    if (level0) {
+    // All lanes on one level (level 0 without mips, or a LOD that changes
+    // slowly across the call): that level's rows can be windowed.
+    const int32_t base0 = level.base[0];
+    if (level0 || all(level.base == Int(base0))) {
+        const int32_t* rows = texels + base0;
+        const int w = level.width[0], h = level.height[0];
 #if defined(ST_SIMD_AVX512)
-        windowed = fetch_window_groups(texels, tex_->width, tex_->height, u, v, t00, t10, t01, t11) ||
-                   fetch_window(texels, tex_->width, u, v, t00, t10, t01, t11);
+        windowed = fetch_window_groups(rows, w, h, u, v, t00, t10, t01, t11) ||
+                   fetch_window(rows, w, u, v, t00, t10, t01, t11);
 #else
-        windowed = fetch_window(texels, tex_->width, u, v, t00, t10, t01, t11);
+        windowed = fetch_window(rows, w, u, v, t00, t10, t01, t11);
 #endif
     }
     if (!windowed) {
