@@ -252,9 +252,9 @@ ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level,
     const int32_t base0 = level.base[0];
     if (level0 || all(level.base == Int(base0))) {
         const int32_t* rows = texels + base0;
-        const int w = level.width[0], h = level.height[0];
+        const int w = level.width[0];
 #if defined(ST_SIMD_AVX512)
-        windowed = fetch_window_groups(rows, w, h, u, v, t00, t10, t01, t11) ||
+        windowed = fetch_window_groups(rows, w, level.height[0], u, v, t00, t10, t01, t11) ||
                    fetch_window(rows, w, u, v, t00, t10, t01, t11);
 #else
         windowed = fetch_window(rows, w, u, v, t00, t10, t01, t11);
