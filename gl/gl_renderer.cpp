@@ -136,6 +136,21 @@ GLenum gl_internal_format(TextureFormat f) {
 
 // Level by level, from the host's texels: RGBA8 as bytes, the float formats
 // as RGBA floats that GL converts to the storage format (texel_formats.h).
+// An FBO drawing into `level` of the 2D texture `colour` (width x height
+// at that level), with its own 32-bit float depth buffer; left bound.
+void make_framebuffer(GLuint colour, int level, int width, int height, GLuint& fbo, GLuint& depth) {
+    glGenRenderbuffers(1, &depth);
+    glBindRenderbuffer(GL_RENDERBUFFER, depth);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
+    glGenFramebuffers(1, &fbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, level);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        throw std::runtime_error("GL: incomplete framebuffer " + std::to_string(width) + "x" +
+                                 std::to_string(height) + " at level " + std::to_string(level));
+}
+
 GLenum gl_target(const Texture& tex) { return tex.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D; }
 
 // Level by level and face by face, from the host's texels: RGBA8 as bytes,
@@ -271,16 +286,8 @@ void GlRenderer::prepare(const Frame& frame) {
                        rt.width, rt.height);
         for (int level = 0; level < rt.levels; ++level) {
             GLuint fbo = 0, depth = 0;
-            glGenRenderbuffers(1, &depth);
-            glBindRenderbuffer(GL_RENDERBUFFER, depth);
-            glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, std::max(1, rt.width >> level),
-                                  std::max(1, rt.height >> level));
-            glGenFramebuffers(1, &fbo);
-            glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, n.texture, level);
-            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
-            if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-                throw std::runtime_error("GL: incomplete framebuffer for target " + rt.name);
+            make_framebuffer(n.texture, level, std::max(1, rt.width >> level), std::max(1, rt.height >> level),
+                             fbo, depth);
             // Start from zero, as the CPU side does.
             glClearColor(0, 0, 0, 0);
             glClear(GL_COLOR_BUFFER_BIT);
@@ -309,16 +316,7 @@ void GlRenderer::prepare(const Frame& frame) {
             glGenTextures(1, &t.colour);
             glBindTexture(GL_TEXTURE_2D, t.colour);
             glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, t.width, t.height);
-            glGenRenderbuffers(1, &t.depth);
-            glBindRenderbuffer(GL_RENDERBUFFER, t.depth);
-            glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, t.width, t.height);
-            glGenFramebuffers(1, &t.fbo);
-            glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
-            glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.colour, 0);
-            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth);
-            if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-                throw std::runtime_error("GL: incomplete framebuffer " + std::to_string(t.width) + "x" +
-                                         std::to_string(t.height));
+            make_framebuffer(t.colour, 0, t.width, t.height, t.fbo, t.depth);
         }
 
         for (const DrawCall& dc : pass.draws) {

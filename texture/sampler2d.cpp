@@ -165,30 +165,16 @@ ST_INLINE Vec4 Sampler2D::texel(const LevelLanes& level, Int x, Int y) const {
     // except the npot REPEAT taps of a NaN coordinate, whose weight is NaN
     // anyway: those read 0, never outside the texels.
     const Mask inside = !(x < Int(0)) && !(y < Int(0)) && x < level.width && y < level.height;
-    const Int index = level.base + y * level.width + x;
-    if (tex_->format == TextureFormat::RGBA8) {
-        const Int rgba = simd::gather(rgba8_.data(), index, inside);
-        return unpack_pairs(red_blue(rgba), green_alpha(rgba));
-    }
-    const float* t = rgba32_.data();
-    const Int i = index * Int(4);
-    return Vec4(simd::gather(t, i, inside), simd::gather(t + 1, i, inside), simd::gather(t + 2, i, inside),
-                simd::gather(t + 3, i, inside));
+    return gather_texels(tex_->format == TextureFormat::RGBA8, rgba8_.data(), rgba32_.data(),
+                         level.base + y * level.width + x, inside);
 }
 
 Vec4 Sampler2D::fetch(Int x, Int y, Int level) const {
     const Mask level_ok = !(level < Int(0)) && !(Int(last_level_) < level);
     const LevelLanes l = level_lanes(select(level_ok, level, Int(0)));
     const Mask inside = level_ok && !(x < Int(0)) && !(y < Int(0)) && x < l.width && y < l.height;
-    const Int index = l.base + y * l.width + x;
-    if (tex_->format == TextureFormat::RGBA8) {
-        const Int rgba = simd::gather(rgba8_.data(), index, inside);
-        return unpack_pairs(red_blue(rgba), green_alpha(rgba));
-    }
-    const float* t = rgba32_.data();
-    const Int i = index * Int(4);
-    Vec4 r(simd::gather(t, i, inside), simd::gather(t + 1, i, inside), simd::gather(t + 2, i, inside),
-           simd::gather(t + 3, i, inside));
+    Vec4 r = gather_texels(tex_->format == TextureFormat::RGBA8, rgba8_.data(), rgba32_.data(),
+                           l.base + y * l.width + x, inside);
     if (tex_->format == TextureFormat::R32F) r.w = select(inside, r.w, Float(1.0f));  // the swizzle's 1
     return r;
 }
@@ -292,13 +278,9 @@ Vec4 Sampler2D::filter_levels(const Vec2& st, const LevelChoice& c, TextureFilte
         Int rb0, ga0;
         filter_unorm8(st, l0, filter, false, rb0, ga0);
         if (c.two_levels) {
-            // The 8-bit weight truncates fpart * 256 (§2.8).
-            const Int wl = itrunc(c.fpart * Float(256.0f));
-            const Int w = wl | (wl << 16);
             Int rb1, ga1;
             filter_unorm8(st, level_lanes(c.level1), filter, false, rb1, ga1);
-            rb0 = lerp8_pairs(w, rb0, rb1);
-            ga0 = lerp8_pairs(w, ga0, ga1);
+            blend_levels8(c.fpart, rb0, ga0, rb1, ga1);
         }
         return unpack_pairs(rb0, ga0);
     }
@@ -314,11 +296,7 @@ Vec4 Sampler2D::filter_levels(const Vec2& st, const LevelChoice& c, TextureFilte
 Vec4 Sampler2D::blend_second_level(const Vec2& st, const LevelChoice& c, TextureFilter filter, Mask as_nearest,
                                    Mask blend, const Vec4& c0) const {
     if (none(blend)) return c0;
-    const Vec4 c1 = filter_float(st, level_lanes(c.level1), filter, as_nearest);
-    const Float f = simd::max(c.fpart, Float(0.0f));
-    return select(blend, Vec4(lerp_float(f, c0.x, c1.x), lerp_float(f, c0.y, c1.y), lerp_float(f, c0.z, c1.z),
-                              lerp_float(f, c0.w, c1.w)),
-                  c0);
+    return blend_levels(c.fpart, c0, filter_float(st, level_lanes(c.level1), filter, as_nearest), blend);
 }
 
 Vec4 Sampler2D::sample_levels(const Vec2& st, const LevelChoice& c, bool per_quad_lod) const {

@@ -111,14 +111,7 @@ Vec4 SamplerCube::texel(Int level, Int face, Int x, Int y) const {
     const Mask all(true);
     const Int size = simd::gather(level_size_.data(), level, all);
     const Int index = simd::gather(level_base_.data(), level, all) + (face * size + y) * size + x;
-    if (tex_->format == TextureFormat::RGBA8) {
-        const Int rgba = simd::gather(rgba8_.data(), index, all);
-        return unpack_pairs(red_blue(rgba), green_alpha(rgba));
-    }
-    const float* t = rgba32_.data();
-    const Int i = index * Int(4);
-    return Vec4(simd::gather(t, i, all), simd::gather(t + 1, i, all), simd::gather(t + 2, i, all),
-                simd::gather(t + 3, i, all));
+    return gather_texels(tex_->format == TextureFormat::RGBA8, rgba8_.data(), rgba32_.data(), index, all);
 }
 
 void SamplerCube::nearest_unorm8(const Face& f, Int level, Int& rb, Int& ga) const {
@@ -197,12 +190,9 @@ Vec4 SamplerCube::sample_at(const Face& f, const LevelChoice& c) const {
         Int rb0, ga0;
         nearest_unorm8(f, c.level0, rb0, ga0);
         if (c.two_levels) {
-            const Int wl = itrunc(c.fpart * Float(256.0f));
-            const Int w = wl | (wl << 16);
             Int rb1, ga1;
             nearest_unorm8(f, c.level1, rb1, ga1);
-            rb0 = lerp8_pairs(w, rb0, rb1);
-            ga0 = lerp8_pairs(w, ga0, ga1);
+            blend_levels8(c.fpart, rb0, ga0, rb1, ga1);
         }
         return unpack_pairs(rb0, ga0);
     }
@@ -210,11 +200,7 @@ Vec4 SamplerCube::sample_at(const Face& f, const LevelChoice& c) const {
     if (!c.two_levels) return c0;
     const Mask blend = any_in_group(!(c.fpart <= Float(0.0f)));
     if (none(blend)) return c0;
-    const Vec4 c1 = filter_level(f, c.level1);
-    const Float w = simd::max(c.fpart, Float(0.0f));
-    return select(blend, Vec4(lerp_float(w, c0.x, c1.x), lerp_float(w, c0.y, c1.y), lerp_float(w, c0.z, c1.z),
-                              lerp_float(w, c0.w, c1.w)),
-                  c0);
+    return blend_levels(c.fpart, c0, filter_level(f, c.level1), blend);
 }
 
 namespace {

@@ -184,4 +184,33 @@ ST_INLINE Float half_fast_log2(Float rho2) {
     return (simd::to_float(((bits >> 23) & Int(255)) - Int(128)) + mantissa) * Float(0.5f);
 }
 
+// Texels at `index` where `active` (0 elsewhere, nothing read there): from
+// the packed RGBA8 array when the texture is RGBA8, else from the RGBA
+// float array, four floats a texel.
+ST_INLINE Vec4 gather_texels(bool rgba8, const int32_t* bytes, const float* floats, Int index, Mask active) {
+    if (rgba8) {
+        const Int rgba = simd::gather(bytes, index, active);
+        return unpack_pairs(red_blue(rgba), green_alpha(rgba));
+    }
+    const Int i = index * Int(4);
+    return Vec4(simd::gather(floats, i, active), simd::gather(floats + 1, i, active),
+                simd::gather(floats + 2, i, active), simd::gather(floats + 3, i, active));
+}
+
+// The two trilinear blends (§2.8). Float: fma(max(fpart, 0), C1 - C0, C0)
+// in the lanes of `blend`, C0 elsewhere. 8-bit: lerp8 of the byte pairs with
+// the weight trunc(fpart * 256).
+ST_INLINE Vec4 blend_levels(Float fpart, const Vec4& c0, const Vec4& c1, Mask blend) {
+    const Float f = simd::max(fpart, Float(0.0f));
+    return select(blend, Vec4(lerp_float(f, c0.x, c1.x), lerp_float(f, c0.y, c1.y), lerp_float(f, c0.z, c1.z),
+                              lerp_float(f, c0.w, c1.w)),
+                  c0);
+}
+ST_INLINE void blend_levels8(Float fpart, Int& rb0, Int& ga0, Int rb1, Int ga1) {
+    const Int wl = itrunc(fpart * Float(256.0f));
+    const Int w = wl | (wl << 16);
+    rb0 = lerp8_pairs(w, rb0, rb1);
+    ga0 = lerp8_pairs(w, ga0, ga1);
+}
+
 }  // namespace st::texel
