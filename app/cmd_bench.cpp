@@ -2,26 +2,32 @@
 // says how a frame is measured).
 #include <cstdio>
 #include <iostream>
+#include <memory>
 
 #include "app/bench.h"
 #include "app/commands.h"
+#include "raster/cpu_renderer.h"
+#include "kernels/registry.h"
 
 namespace st {
 
-int cmd_bench(const std::vector<std::string>& names, int frames, bool json, const CommonOptions& common) {
+int cmd_bench(const std::vector<std::string>& names, int frames, bool json, bool scaling,
+              const CommonOptions& common) {
     std::vector<Scene> scenes;
     for (const auto& n : names) scenes.push_back(load_scene(n, common.overrides));
     set_llvmpipe_threads(common.threads);
     Backends backends(common.threads, glsl_dir());
+    std::unique_ptr<CpuRenderer> one_thread;
+    if (scaling) one_thread = std::make_unique<CpuRenderer>(1, builtin_twins());
     const auto start = Clock::now();
     if (!json)
-        std::printf("%-30s %9s %9s %9s %7s %24s %24s | %7s %7s %7s %8s %7s\n", "scene", "size", "cpu fps", "gl fps",
+        std::printf("%-30s %9s %9s %9s %7s %24s %24s | %7s %7s %7s %8s %7s%s\n", "scene", "size", "cpu fps", "gl fps",
                     "cpu/gl", "cpu ms med/min/max", "gl ms med/min/max", "vertex", "setup", "raster", "fragment",
-                    "output");
+                    "output", scaling ? " | 1-thread ms  scaling" : "");
     for (size_t i = 0; i < scenes.size(); ++i) {
         if (ms_between(start, Clock::now()) > 2000.0)
             std::fprintf(stderr, "bench: %zu/%zu %s\n", i + 1, scenes.size(), scenes[i].name.c_str());
-        const BenchResult r = bench_scene(scenes[i], backends, frames, std::max(2, frames / 10));
+        const BenchResult r = bench_scene(scenes[i], backends, frames, std::max(2, frames / 10), one_thread.get());
         if (json) {
             std::cout << bench_json(r, Backend::Cpu).dump() << "\n" << bench_json(r, Backend::Gl).dump() << std::endl;
             continue;
@@ -30,9 +36,11 @@ int cmd_bench(const std::vector<std::string>& names, int frames, bool json, cons
         std::snprintf(size, sizeof size, "%dx%d", r.width, r.height);
         std::snprintf(cpu_ms, sizeof cpu_ms, "%.3f/%.3f/%.3f", r.cpu.ms_median, r.cpu.ms_min, r.cpu.ms_max);
         std::snprintf(gl_ms, sizeof gl_ms, "%.3f/%.3f/%.3f", r.gl.ms_median, r.gl.ms_min, r.gl.ms_max);
-        std::printf("%-30s %9s %9.1f %9.1f %7.2f %24s %24s | %7.3f %7.3f %7.3f %8.3f %7.3f\n", r.scene.c_str(), size,
+        std::printf("%-30s %9s %9.1f %9.1f %7.2f %24s %24s | %7.3f %7.3f %7.3f %8.3f %7.3f", r.scene.c_str(), size,
                     r.cpu.fps(), r.gl.fps(), r.cpu.fps() / r.gl.fps(), cpu_ms, gl_ms, r.cpu_stages.vertex_ms,
                     r.cpu_stages.setup_ms, r.cpu_stages.raster_ms, r.cpu_stages.fragment_ms, r.cpu_stages.output_ms);
+        if (scaling) std::printf(" | %11.3f %8.2f", r.cpu_one_thread.ms_median, r.scaling());
+        std::printf("\n");
         std::fflush(stdout);
     }
     if (!json)

@@ -62,6 +62,9 @@ int main(int argc, char** argv) {
     bench->add_option("scenes", scenes, "built-in scene names or .json paths")->required();
     bench->add_option("--frames", frames, "measured frames per backend (after warm-up)")->check(CLI::Range(1, 100000));
     bench->add_flag("--json", json, "one JSON object per scene and backend");
+    bool scaling = false;
+    bench->add_flag("--scaling", scaling,
+                    "also run the CPU side on one thread, interleaved, and report the 1 -> N thread scaling");
     add_common(bench, common);
 
     st::SlabOptions slab_options;
@@ -155,7 +158,7 @@ int main(int argc, char** argv) {
             return st::cmd_profile(slab_options, profile_out, r_max, samples);
         }
         if (*figures) return st::cmd_optics_figures(out_dir, figure_photons, figure_threads);
-        if (*bench) return st::cmd_bench(scenes, frames, json, common);
+        if (*bench) return st::cmd_bench(scenes, frames, json, scaling, common);
         if (*sweep) return st::cmd_sweep(technique, out_dir, common);
         std::cerr << "shadertwin: no command given (try --help)\n";
         return 2;

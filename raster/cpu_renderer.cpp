@@ -144,6 +144,7 @@ void CpuRenderer::Impl::refresh_target_textures(std::vector<PreparedDraw>& draws
 void CpuRenderer::execute() {
     Impl& m = *impl_;
     const FlushDenormals float_env;  // as llvmpipe's threads (float_env.h)
+    const WorkerPool::Frame awake(m.pool);
     times_ = StageTimes{};
     // Every target starts the frame at zero, as on the GL side.
     m.targets.clear();

@@ -148,6 +148,14 @@ for line in sys.stdin:
     grep -q '"frames":3' "$work/bench.jsonl" || fail "bench: --frames not honoured"
     "$bin" bench triangles-basic --frames 2 >"$work/table.txt"
     grep -q "cpu fps" "$work/table.txt" || fail "bench: no table without --json"
+    ! grep -q '"scaling"' "$work/bench.jsonl" || fail "bench: scaling reported without --scaling"
+    # --scaling: a one-thread CPU renderer joins the rotation.
+    "$bin" bench triangles-basic --frames 3 --threads 2 --scaling --json >"$work/scaling.jsonl"
+    grep '"backend":"cpu"' "$work/scaling.jsonl" | grep -q '"one_thread_ms_median"' || fail "bench: no one-thread time"
+    scaling=$(grep '"backend":"cpu"' "$work/scaling.jsonl" | python3 -c 'import json,sys; print(json.load(sys.stdin)["scaling"])')
+    python3 -c "import sys; sys.exit(0 if 0 < $scaling < 100 else 1)" || fail "bench: scaling $scaling not a ratio"
+    "$bin" bench triangles-basic --frames 2 --scaling >"$work/scaling.txt"
+    grep -q "scaling" "$work/scaling.txt" || fail "bench: no scaling column"
     ;;
 
   slab)
