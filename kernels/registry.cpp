@@ -8,6 +8,7 @@
 #include "kernels/conformance/conformance.h"
 #include "kernels/thin_slab/background.h"
 #include "kernels/harness/coverage.h"
+#include "kernels/relief/relief.h"
 #include "kernels/triangles/interp.h"
 #include "kernels/triangles/textured.h"
 #include "kernels/thin_slab/thin_slab.h"
@@ -26,6 +27,7 @@ const std::map<std::string, Factory<VertexTwin>>& vertex_twins() {
         {"thin_slab", [] { return std::make_unique<ThinSlabVertex>(); }},
         {"thin_slab_vertex", [] { return std::make_unique<ThinSlabVertexVariant>(); }},
         {"thin_slab_host", [] { return std::make_unique<ThinSlabHostVertex>(); }},
+        {"relief", [] { return std::make_unique<ReliefVertex>(); }},
     };
     return twins;
 }
@@ -55,6 +57,7 @@ const std::map<std::string, Factory<FragmentTwin>>& fragment_twins() {
         {"sample_cube_lod", [] { return std::make_unique<SampleCubeLodFragment>(); }},
         {"sample_cube_bias", [] { return std::make_unique<SampleCubeBiasFragment>(); }},
         {"sample_cube_grad", [] { return std::make_unique<SampleCubeGradFragment>(); }},
+        {"normal_mapping", [] { return std::make_unique<NormalMappingFragment>(); }},
     };
     return twins;
 }

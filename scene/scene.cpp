@@ -27,6 +27,7 @@ const std::map<std::string, SceneBuilder>& scene_builders() {
         {"conformance", build_conformance_scene},
         {"thin-slab", build_thin_slab_scene},
         {"thin-slab-sweep", build_thin_slab_sweep_scene},
+        {"relief", build_relief_scene},
     };
     return builders;
 }

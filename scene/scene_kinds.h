@@ -25,5 +25,6 @@ Frame build_triangles_scene(JsonReader& scene, SceneSize size);
 Frame build_conformance_scene(JsonReader& scene, SceneSize size);
 Frame build_thin_slab_scene(JsonReader& scene, SceneSize size);
 Frame build_thin_slab_sweep_scene(JsonReader& scene, SceneSize size);
+Frame build_relief_scene(JsonReader& scene, SceneSize size);
 
 }  // namespace st

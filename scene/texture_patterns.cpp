@@ -9,9 +9,6 @@
 
 namespace st {
 
-namespace {
-
-// A 32-bit integer hash (lowbias32): cheap, well mixed, platform-independent.
 uint32_t hash32(uint32_t x) {
     x ^= x >> 16;
     x *= 0x7feb352du;
@@ -20,6 +17,8 @@ uint32_t hash32(uint32_t x) {
     x ^= x >> 16;
     return x;
 }
+
+namespace {
 
 // Fills one level with the pattern.
 void fill(int width, int height, TextureFormat format, bool checker, uint32_t seed, std::vector<uint8_t>& texels8,

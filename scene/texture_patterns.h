@@ -2,12 +2,17 @@
 // image file has to ship and both backends get the same texels.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "frame/frame.h"
 #include "scene/json_reader.h"
 
 namespace st {
+
+// A 32-bit integer hash (lowbias32): cheap, well mixed, platform-independent;
+// the one every generated texture draws its randomness from.
+uint32_t hash32(uint32_t x);
 
 // Reads a texture object: {"format": "rgba8"|"rgba32f", "filter":
 // "linear"|"nearest", "wrap": "repeat"|"clamp", "width", "height",

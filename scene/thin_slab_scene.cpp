@@ -18,6 +18,7 @@
 #include "scene/input_error.h"
 #include "scene/scene_kinds.h"
 #include "scene/thin_slab_textures.h"
+#include "scene/uniform_values.h"
 
 namespace st {
 
@@ -64,27 +65,6 @@ private:
 };
 
 glm::vec3 vec3_of(const std::vector<double>& v) { return glm::vec3(float(v[0]), float(v[1]), float(v[2])); }
-
-Uniform uniform(const std::string& name, float v) {
-    Uniform u{name, UniformType::Float, {}};
-    u.value[0] = v;
-    return u;
-}
-
-Uniform uniform(const std::string& name, const glm::vec3& v) {
-    Uniform u{name, UniformType::Vec3, {}};
-    u.value[0] = v.x;
-    u.value[1] = v.y;
-    u.value[2] = v.z;
-    return u;
-}
-
-Uniform uniform(const std::string& name, const glm::mat4& m) {
-    Uniform u{name, UniformType::Mat4, {}};
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r) u.value[size_t(c * 4 + r)] = m[c][r];
-    return u;
-}
 
 struct FlagShape {
     double width, height, amplitude, frequency, time;

@@ -132,6 +132,9 @@ for line in sys.stdin:
     expect_bad_input "unknown min filter" "$bin" render conformance-mip-rgba8-linear-mip-linear --set textures.0.min_filter='"cubic"'
     expect_bad_input "unknown wrap" "$bin" render conformance-mip-rgba8-linear-mip-linear --set textures.0.wrap='"border"'
     expect_bad_input "unknown blend factor" "$bin" render conformance-blend-one-one --set 'blend=["one","two"]'
+    expect_bad_input "relief view past the horizon" "$bin" render relief-normal-mapping --set view.angle_deg=80
+    expect_bad_input "unknown relief technique" "$bin" render relief-normal-mapping --set technique='"raymarch"'
+    expect_bad_input "relief map too small" "$bin" render relief-normal-mapping --set surface.map_size=2
     ;;
 
   bench_shape)

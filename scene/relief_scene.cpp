@@ -1,0 +1,126 @@
+// relief_scene.cpp: the "relief" kind, Timonen's translucent relief mapping
+// (Table 1's rows as `technique`). The surface is the plane z = 0 seen from
+// a camera on a sphere around the origin; the quad is exactly the part of
+// the plane a slightly widened frustum sees, so it covers the whole screen
+// (as the paper measures) and no vertex needs clipping. Its maps are
+// generated here (scene/relief_maps.h).
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/input_error.h"
+#include "scene/relief_maps.h"
+#include "scene/scene_kinds.h"
+#include "scene/uniform_values.h"
+
+namespace st {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct View {
+    glm::dvec3 eye, forward, right, up;
+    double tan_half_x, tan_half_y;
+};
+
+// The four points where the frustum's corner rays, widened by 5 %, meet the
+// plane z = 0, counter-clockwise as seen from above.
+std::array<glm::dvec3, 4> visible_quad(const View& v) {
+    std::array<glm::dvec3, 4> corners;
+    const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+    for (int k = 0; k < 4; ++k) {
+        const glm::dvec3 d = v.forward + (sx[k] * 1.05 * v.tan_half_x) * v.right + (sy[k] * 1.05 * v.tan_half_y) * v.up;
+        if (!(d.z < -1e-3 * glm::length(d)))
+            throw InputError("field 'view.angle_deg': the view reaches the horizon, so the surface cannot cover the "
+                             "screen (at most 90 - fov/2 - a margin)");
+        corners[size_t(k)] = v.eye + d * (-v.eye.z / d.z);
+    }
+    return corners;
+}
+
+}  // namespace
+
+Frame build_relief_scene(JsonReader& scene, SceneSize size) {
+    const std::string technique = scene.choice_or("technique", "normal-mapping", {"normal-mapping"});
+
+    // The camera: `distance` from the origin, `angle_deg` from the surface
+    // normal (0 looks straight down), `azimuth_deg` around it.
+    JsonReader view_r = scene.object("view");
+    const double theta = view_r.number_or("angle_deg", 45.0, 0.0, 89.0) * kPi / 180.0;
+    const double phi = view_r.number_or("azimuth_deg", 0.0, -360.0, 360.0) * kPi / 180.0;
+    const double distance = view_r.number_or("distance", 2.0, 1e-3, 1e3);
+    const double fov = view_r.number_or("fov_deg", 45.0, 1.0, 120.0) * kPi / 180.0;
+    view_r.finish();
+
+    JsonReader light_r = scene.object("light");
+    const std::vector<double> lp = light_r.numbers("position", 3, 3, -1e6, 1e6);
+    light_r.finish();
+
+    JsonReader surface_r = scene.object("surface");
+    StoneParams stones;
+    stones.size = surface_r.integer_or("map_size", 256, 4, 4096);
+    stones.cells = surface_r.integer_or("stones", 5, 1, 64);
+    stones.seed = uint32_t(surface_r.integer_or("seed", 1, 0, 1 << 30));
+    const double depth = surface_r.number_or("depth", 0.08, 0.0, 10.0);  // in texture coordinates
+    const double uv_per_unit = surface_r.number_or("uv_per_unit", 1.0, 1e-3, 1e3);
+    surface_r.finish();
+
+    JsonReader shading_r = scene.object("shading");
+    const float ambient = float(shading_r.number_or("ambient", 0.15, 0.0, 10.0));
+    const float specular = float(shading_r.number_or("specular", 0.35, 0.0, 100.0));
+    shading_r.finish();
+
+    View v;
+    v.eye = distance * glm::dvec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+    v.forward = -glm::normalize(v.eye);
+    // Screen-up points away from the camera across the plane (straight
+    // down, it is +y).
+    const glm::dvec3 world_up = theta < 1e-6 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+    v.right = glm::normalize(glm::cross(v.forward, world_up));
+    v.up = glm::cross(v.right, v.forward);
+    v.tan_half_y = std::tan(0.5 * fov);
+    v.tan_half_x = v.tan_half_y * double(size.width) / double(size.height);
+    const std::array<glm::dvec3, 4> quad = visible_quad(v);
+
+    // Near and far bracket the quad's depths along the view direction.
+    double nearest = 1e30, farthest = 0;
+    for (const glm::dvec3& c : quad) {
+        const double z = glm::dot(c - v.eye, v.forward);
+        nearest = std::min(nearest, z), farthest = std::max(farthest, z);
+    }
+    const glm::mat4 view_proj =
+        glm::perspective(float(fov), float(size.width) / float(size.height), float(0.5 * nearest),
+                         float(2.0 * farthest)) *
+        glm::lookAt(glm::vec3(v.eye), glm::vec3(0.0f), glm::vec3(v.up));
+
+    DrawCall draw;
+    draw.vertex = "relief";
+    draw.fragment = "normal_mapping";
+    draw.vertices.attribute_count = 2;
+    for (const glm::dvec3& c : quad) {
+        draw.vertices.data.push_back(glm::vec4(float(c.x), float(c.y), 0.0f, 1.0f));
+        draw.vertices.data.push_back(glm::vec4(float(c.x * uv_per_unit), float(c.y * uv_per_unit), 0.0f, 1.0f));
+    }
+    draw.indices = {0, 1, 2, 0, 2, 3};
+    draw.textures.push_back(relief_texture(stone_heights(stones), depth, "relief_map"));
+    draw.textures.push_back(stone_colour_texture(stones, "colour_map"));
+    draw.uniforms = {uniform("view_proj", view_proj),
+                     uniform("eye", glm::vec3(v.eye)),
+                     uniform("light", glm::vec3(float(lp[0]), float(lp[1]), float(lp[2]))),
+                     uniform("ambient", ambient),
+                     uniform("specular", specular)};
+
+    Pass pass;
+    pass.width = size.width;
+    pass.height = size.height;
+    pass.clear_colour = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    pass.draws.push_back(std::move(draw));
+    Frame frame;
+    frame.passes.push_back(std::move(pass));
+    return frame;
+}
+
+}  // namespace st

@@ -1,0 +1,34 @@
+// uniform_values.h: Uniform values from glm types, for scene builders that
+// compute their uniforms on the host.
+#pragma once
+
+#include <string>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "frame/frame.h"
+
+namespace st {
+
+inline Uniform uniform(const std::string& name, float v) {
+    Uniform u{name, UniformType::Float, {}};
+    u.value[0] = v;
+    return u;
+}
+
+inline Uniform uniform(const std::string& name, const glm::vec3& v) {
+    Uniform u{name, UniformType::Vec3, {}};
+    for (int c = 0; c < 3; ++c) u.value[size_t(c)] = v[c];
+    return u;
+}
+
+// Column-major, as glUniformMatrix4fv takes it.
+inline Uniform uniform(const std::string& name, const glm::mat4& m) {
+    Uniform u{name, UniformType::Mat4, {}};
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) u.value[size_t(c * 4 + r)] = m[c][r];
+    return u;
+}
+
+}  // namespace st
