@@ -58,6 +58,7 @@ const std::map<std::string, Factory<FragmentTwin>>& fragment_twins() {
         {"sample_cube_bias", [] { return std::make_unique<SampleCubeBiasFragment>(); }},
         {"sample_cube_grad", [] { return std::make_unique<SampleCubeGradFragment>(); }},
         {"normal_mapping", [] { return std::make_unique<NormalMappingFragment>(); }},
+        {"relief_mapping", [] { return std::make_unique<ReliefMappingFragment>(); }},
     };
     return twins;
 }

@@ -20,6 +20,7 @@ namespace st {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+constexpr int kMaxLinearSteps = 512, kMaxBinarySteps = 32;
 
 struct View {
     glm::dvec3 eye, forward, right, up;
@@ -44,7 +45,7 @@ std::array<glm::dvec3, 4> visible_quad(const View& v) {
 }  // namespace
 
 Frame build_relief_scene(JsonReader& scene, SceneSize size) {
-    const std::string technique = scene.choice_or("technique", "normal-mapping", {"normal-mapping"});
+    const std::string technique = scene.choice_or("technique", "relief", {"normal-mapping", "relief"});
 
     // The camera: `distance` from the origin, `angle_deg` from the surface
     // normal (0 looks straight down), `azimuth_deg` around it.
@@ -67,6 +68,17 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
     const double depth = surface_r.number_or("depth", 0.08, 0.0, 10.0);  // in texture coordinates
     const double uv_per_unit = surface_r.number_or("uv_per_unit", 1.0, 1e-3, 1e3);
     surface_r.finish();
+
+    // The search (relief and later rows); steps above kMax* are refused
+    // rather than run for seconds.
+    int linear_steps = 16, binary_steps = 6;
+    bool secant = true;
+    if (auto search = scene.object_if("search")) {
+        linear_steps = search->integer_or("linear_steps", linear_steps, 1, kMaxLinearSteps);
+        binary_steps = search->integer_or("binary_steps", binary_steps, 0, kMaxBinarySteps);
+        secant = search->boolean_or("secant", secant);
+        search->finish();
+    }
 
     JsonReader shading_r = scene.object("shading");
     const float ambient = float(shading_r.number_or("ambient", 0.15, 0.0, 10.0));
@@ -98,7 +110,7 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
 
     DrawCall draw;
     draw.vertex = "relief";
-    draw.fragment = "normal_mapping";
+    draw.fragment = technique == "normal-mapping" ? "normal_mapping" : "relief_mapping";
     draw.vertices.attribute_count = 2;
     for (const glm::dvec3& c : quad) {
         draw.vertices.data.push_back(glm::vec4(float(c.x), float(c.y), 0.0f, 1.0f));
@@ -112,6 +124,13 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
                      uniform("light", glm::vec3(float(lp[0]), float(lp[1]), float(lp[2]))),
                      uniform("ambient", ambient),
                      uniform("specular", specular)};
+    if (technique != "normal-mapping") {
+        draw.uniforms.push_back(uniform("depth", float(depth)));
+        draw.uniforms.push_back(uniform("world_depth", float(depth / uv_per_unit)));
+        draw.uniforms.push_back(int_uniform("linear_steps", linear_steps));
+        draw.uniforms.push_back(int_uniform("binary_steps", binary_steps));
+        draw.uniforms.push_back(int_uniform("secant", secant ? 1 : 0));
+    }
 
     Pass pass;
     pass.width = size.width;

@@ -17,6 +17,13 @@ inline Uniform uniform(const std::string& name, float v) {
     return u;
 }
 
+// An int (or a bool, which glUniform1i sets too), stored exactly as a float.
+inline Uniform int_uniform(const std::string& name, int v) {
+    Uniform u{name, UniformType::Int, {}};
+    u.value[0] = float(v);
+    return u;
+}
+
 inline Uniform uniform(const std::string& name, const glm::vec3& v) {
     Uniform u{name, UniformType::Vec3, {}};
     for (int c = 0; c < 3; ++c) u.value[size_t(c)] = v[c];

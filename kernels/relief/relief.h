@@ -40,4 +40,17 @@ private:
     ReliefLighting u_;
 };
 
+class ReliefMappingFragment final : public FragmentProgram<ReliefMappingFragment> {  // relief_mapping.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    ReliefLighting u_;
+    float depth_ = 0.0f, world_depth_ = 0.0f;
+    int linear_steps_ = 1, binary_steps_ = 0;
+    bool secant_ = false;
+};
+
 }  // namespace st

@@ -1,0 +1,45 @@
+// relief_mapping_frag.cpp: twin of glsl/relief/relief_mapping.frag, line for
+// line.
+#include "kernels/relief/relief.h"
+
+#include "kernels/relief/relief_search.h"
+#include "kernels/relief/relief_shading.h"
+#include "shading/derivatives.h"
+#include "shading/glsl_math.h"
+#include "texture/sampler2d.h"
+
+namespace st {
+
+namespace {
+constexpr int v_position = 0, v_uv = 1;  // inputs
+}  // namespace
+
+void ReliefMappingFragment::bind(const Bindings& b) {
+    u_.read(b);
+    depth_ = b.get_float("depth");
+    world_depth_ = b.get_float("world_depth");
+    linear_steps_ = b.get_int("linear_steps");
+    binary_steps_ = b.get_int("binary_steps");
+    secant_ = b.get_int("secant") != 0;
+}
+
+uint32_t ReliefMappingFragment::inputs_read() const { return reads(v_position, "xyz") | reads(v_uv, "xy"); }
+
+Vec4 ReliefMappingFragment::main(const Fragment& frag) const {
+    const Vec2 uv = frag.varying(v_uv).xy();
+    const Vec3 p = frag.varying(v_position).xyz();
+    const Vec3 v = glsl::normalize(Vec3(u_.eye) - p);
+    const Vec2 dx = dFdx(uv);
+    const Vec2 dy = dFdy(uv);
+    const Vec2 offset = Vec2(-v.x, -v.y) * (Float(depth_) / v.z);
+    const Float t = relief::trace_height_field(frag.exec(), *u_.relief_map, uv, offset, dx, dy, linear_steps_,
+                                               binary_steps_, secant_);
+    const Vec2 hit_uv = uv + offset * t;
+    const Vec3 hit = p - v * (t * Float(world_depth_) / v.z);
+    const Vec3 n = relief::decode_normal(u_.relief_map->sample_grad(hit_uv, dx, dy));
+    const Vec3 albedo = u_.colour_map->sample_grad(hit_uv, dx, dy).xyz();
+    const Vec3 l = glsl::normalize(Vec3(u_.light) - hit);
+    return Vec4(relief::blinn_phong(albedo, n, l, v, Float(u_.ambient), Float(u_.specular)), Float(1.0f));
+}
+
+}  // namespace st
