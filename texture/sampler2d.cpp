@@ -388,8 +388,8 @@ Vec4 Sampler2D::sample_lod(const Vec2& st, Float lod) const {
     return sample_levels(st, choose_levels(lod_.requested(lod), mip_filter_, last_level_), false);
 }
 
-Vec4 Sampler2D::sample_grad(const Vec2& st, const Vec2& dx, const Vec2& dy) const {
-    if (!needs_lod()) return sample_base(st);
+texel::LevelChoice Sampler2D::grad_levels(const Vec2& dx, const Vec2& dy) const {
+    if (!needs_lod()) return texel::LevelChoice{};  // unused: sample_grad samples the base level
     // Per lane, each product, square and sum rounded, and an infinite or
     // NaN rho^2 taken as 0 (§2.3).
     const Float w(float(tex_->width)), h(float(tex_->height));
@@ -398,7 +398,16 @@ Vec4 Sampler2D::sample_grad(const Vec2& st, const Vec2& dx, const Vec2& dy) cons
     Float rho2 = maxps(a + c, b + d);
     const Mask special = (simd::bit_cast_int(rho2) & Int(0x7f800000)) == Int(0x7f800000);
     rho2 = select(special, Float(0.0f), rho2);
-    return sample_levels(st, choose_from_rho2(rho2, mip_filter_, last_level_, lod_), false);
+    return choose_from_rho2(rho2, mip_filter_, last_level_, lod_);
+}
+
+Vec4 Sampler2D::sample_grad(const Vec2& st, const texel::LevelChoice& levels) const {
+    if (!needs_lod()) return sample_base(st);
+    return sample_levels(st, levels, false);
+}
+
+Vec4 Sampler2D::sample_grad(const Vec2& st, const Vec2& dx, const Vec2& dy) const {
+    return sample_grad(st, grad_levels(dx, dy));
 }
 
 Int Sampler2D::size_x(Int lod) const { return texture_size(lod, true); }

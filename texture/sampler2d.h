@@ -13,13 +13,10 @@
 
 #include "frame/frame.h"
 #include "simd/lane_vec.h"
+#include "texture/lod_selection.h"
 #include "texture/lod_state.h"
 
 namespace st {
-
-namespace texel {
-struct LevelChoice;
-}
 
 class Sampler2D {
 public:
@@ -36,6 +33,13 @@ public:
     Vec4 sample_lod(const Vec2& st, Float lod) const;
     // GLSL textureGrad(sampler2D, vec2, vec2 dPdx, vec2 dPdy): per lane.
     Vec4 sample_grad(const Vec2& st, const Vec2& dpdx, const Vec2& dpdy) const;
+    // textureGrad's levels depend on the derivatives alone, not on the
+    // coordinate: a search that reads one texture at many points with the
+    // same derivatives chooses them once (as LLVM hoists that computation
+    // out of llvmpipe's loop) and samples with the second form; the result
+    // is the same as sample_grad(st, dpdx, dpdy), bit for bit.
+    texel::LevelChoice grad_levels(const Vec2& dpdx, const Vec2& dpdy) const;
+    Vec4 sample_grad(const Vec2& st, const texel::LevelChoice& levels) const;
     // GLSL textureSize(sampler2D, lod).x and .y (lane 0's lod decides, as
     // in llvmpipe; 0 for a level outside the chain).
     Int size_x(Int lod) const;
