@@ -225,6 +225,7 @@ ST_INLINE Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, 
 // replace the gathers.
 // Its helpers and lambdas are forced inline: out of line, their vectors go
 // through memory, which cost 40 % of the unscaled RGBA8 rate (microbench).
+template <bool kRedBlue>
 ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, Int& rb,
                               Int& ga) const {
     const int32_t* texels = rgba8_.data();
@@ -276,7 +277,8 @@ ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level,
         const Int top = lerp8_pairs(wu, half_bytes(t01), half_bytes(t11));
         return lerp8_pairs(wv, bottom, top);
     };
-    rb = pairs(0);
+    if constexpr (kRedBlue) rb = pairs(0);
+    else rb = Int(0);
     ga = pairs(8);
 }
 
@@ -404,6 +406,20 @@ texel::LevelChoice Sampler2D::grad_levels(const Vec2& dx, const Vec2& dy) const 
 Vec4 Sampler2D::sample_grad(const Vec2& st, const texel::LevelChoice& levels) const {
     if (!needs_lod()) return sample_base(st);
     return sample_levels(st, levels, false);
+}
+
+Float Sampler2D::sample_grad_alpha(const Vec2& st, const texel::LevelChoice& c) const {
+    if (!needs_lod() || !aos_ || tex_->min_filter != tex_->mag_filter) return sample_grad(st, c).w;
+    // filter_levels' 8-bit branch with the green/alpha pair only.
+    Int rb0, ga0;
+    filter_unorm8<false>(st, level_lanes(c.level0), tex_->min_filter, false, rb0, ga0);
+    if (c.two_levels) {
+        Int rb1, ga1;
+        filter_unorm8<false>(st, level_lanes(c.level1), tex_->min_filter, false, rb1, ga1);
+        const Int wl = itrunc(c.fpart * Float(256.0f));
+        ga0 = lerp8_pairs(wl | (wl << 16), ga0, ga1);
+    }
+    return unorm8_to_float(ga0 >> 16);
 }
 
 Vec4 Sampler2D::sample_grad(const Vec2& st, const Vec2& dx, const Vec2& dy) const {

@@ -40,6 +40,9 @@ public:
     // is the same as sample_grad(st, dpdx, dpdy), bit for bit.
     texel::LevelChoice grad_levels(const Vec2& dpdx, const Vec2& dpdy) const;
     Vec4 sample_grad(const Vec2& st, const texel::LevelChoice& levels) const;
+    // sample_grad(st, levels).w alone: a height read. On the 8-bit path
+    // the red and blue pair is then neither filtered nor blended.
+    Float sample_grad_alpha(const Vec2& st, const texel::LevelChoice& levels) const;
     // GLSL textureSize(sampler2D, lod).x and .y (lane 0's lod decides, as
     // in llvmpipe; 0 for a level outside the chain).
     Int size_x(Int lod) const;
@@ -76,6 +79,7 @@ private:
                             Mask blend, const Vec4& c0) const;
     Vec4 filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter, Mask as_nearest) const;
     Int texture_size(Int lod, bool x) const;
+    template <bool kRedBlue = true>
     void filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, Int& rb,
                        Int& ga) const;
     Vec4 texel(const LevelLanes& level, Int x, Int y) const;

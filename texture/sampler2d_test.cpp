@@ -3,6 +3,8 @@
 // scenes, run by the cli.compare_builtin test.)
 #include "texture/sampler2d.h"
 
+#include "texture/mip_generation.h"
+
 #include <random>
 
 #include <gtest/gtest.h>
@@ -151,4 +153,44 @@ TEST(Unorm8Filter, WeightsAreQuantisedTo8Bits) {
     EXPECT_EQ(v.r, 64.0f * (1.0f / 255.0f));
 }
 
+}  // namespace st
+
+namespace st {
+namespace {
+
+// The hoisted forms a search uses give sample_grad's bits: levels chosen
+// once for the derivatives, and the alpha-only read.
+TEST(SampleGrad, HoistedLevelsAndAlphaOnlyAreTheSameBits) {
+    for (TextureFormat format : {TextureFormat::RGBA8, TextureFormat::RGBA32F}) {
+        for (TextureFilter filter : {TextureFilter::Linear, TextureFilter::Nearest}) {
+            Texture t = ramp(format, filter, TextureWrap::Repeat, 64, 64);
+            t.mip_filter = MipFilter::Linear;
+            generate_box_mips(t, full_chain_levels(64, 64));
+            const Sampler2D s(t);
+            std::mt19937 rng(7);
+            std::uniform_real_distribution<float> coord(-2.0f, 3.0f), grad(-0.2f, 0.2f);
+            for (int round = 0; round < 200; ++round) {
+                Vec2 st, dx, dy;
+                for (int lane = 0; lane < kLanes; ++lane) {
+                    st.x.set(lane, coord(rng)), st.y.set(lane, coord(rng));
+                    dx.x.set(lane, grad(rng)), dx.y.set(lane, grad(rng));
+                    dy.x.set(lane, grad(rng)), dy.y.set(lane, grad(rng));
+                }
+                const Vec4 direct = s.sample_grad(st, dx, dy);
+                const texel::LevelChoice levels = s.grad_levels(dx, dy);
+                const Vec4 hoisted = s.sample_grad(st, levels);
+                const Float alpha = s.sample_grad_alpha(st, levels);
+                for (int lane = 0; lane < kLanes; ++lane) {
+                    ASSERT_EQ(direct.x[lane], hoisted.x[lane]);
+                    ASSERT_EQ(direct.y[lane], hoisted.y[lane]);
+                    ASSERT_EQ(direct.z[lane], hoisted.z[lane]);
+                    ASSERT_EQ(direct.w[lane], hoisted.w[lane]);
+                    ASSERT_EQ(direct.w[lane], alpha[lane]) << "lane " << lane << " round " << round;
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
 }  // namespace st

@@ -16,7 +16,7 @@ Float trace_height_field(Exec& exec, const Sampler2D& map, const Vec2& uv, const
     const texel::LevelChoice levels = map.grad_levels(dx, dy);
     const Float size = Float(1.0f) / Float(float(linear_steps));
     Float t = 0.0f;
-    Float h = map.sample_grad(uv, levels).w;
+    Float h = map.sample_grad_alpha(uv, levels);
     Float h_prev = h;
     Int i = 0;
     exec.loop([&](Loop& loop) {
@@ -24,7 +24,7 @@ Float trace_height_field(Exec& exec, const Sampler2D& map, const Vec2& uv, const
         exec.assign(h_prev, h);
         const Float t_next = t + size;
         exec.assign(t, t_next);
-        const Float h_next = map.sample_grad(uv + offset * t_next, levels).w;
+        const Float h_next = map.sample_grad_alpha(uv + offset * t_next, levels);
         exec.assign(h, h_next);
         loop.break_if(Float(1.0f) - t_next <= h_next);
         exec.assign(i, i + 1);
@@ -37,7 +37,7 @@ Float trace_height_field(Exec& exec, const Sampler2D& map, const Vec2& uv, const
     exec.loop([&](Loop& loop) {
         loop.break_if(!(k < Int(binary_steps)));
         const Float mid = Float(0.5f) * (t_lo + t_hi);
-        const Float h_mid = map.sample_grad(uv + offset * mid, levels).w;
+        const Float h_mid = map.sample_grad_alpha(uv + offset * mid, levels);
         const Mask below = Float(1.0f) - mid <= h_mid;
         exec.assign(t_hi, glsl::select(below, mid, t_hi));
         exec.assign(h_hi, glsl::select(below, h_mid, h_hi));
