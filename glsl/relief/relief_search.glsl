@@ -8,40 +8,57 @@
 // entry point's derivatives (textureGrad), so that every step of a quad
 // reads the level its entry reads. Twin: kernels/relief/relief_search.cpp.
 
-// The t of the first hit: linear_steps equal steps until the ray is at or
-// below the surface (the floor stops every ray), binary_steps halvings of
-// that last step, then, if `secant`, the zero of the straight line through
-// the ray-minus-surface differences at the bracket's ends.
-float trace_height_field(sampler2D map, vec2 uv, vec2 offset, vec2 dx, vec2 dy, int linear_steps,
-                         int binary_steps, bool secant) {
+// The first point at or below the surface on a ray segment through a
+// layer's box: it starts at `uv` at height `a` (in the layer's units) and
+// ends at uv + offset at height a + dh. s in [0, 1] is the fraction of the
+// segment: linear_steps equal steps until the ray is at or below the
+// surface, binary_steps halvings of that last step, then, if `secant`, the
+// zero of the straight line through the ray-minus-surface differences at
+// the bracket's ends. `hit` is false when the segment stays above the
+// surface (a rising ray leaves the box); then s is 1.
+float trace_segment(sampler2D map, vec2 uv, vec2 offset, float a, float dh, vec2 dx, vec2 dy, int linear_steps,
+                    int binary_steps, bool secant, out bool hit) {
     float size = 1.0 / float(linear_steps);
-    float t = 0.0;
+    float s = 0.0;
     float h = textureGrad(map, uv, dx, dy).a;
     float h_prev = h;
     for (int i = 0; i < linear_steps; ++i) {
         h_prev = h;
-        t += size;
-        h = textureGrad(map, uv + offset * t, dx, dy).a;
-        if (1.0 - t <= h) break;
+        s += size;
+        h = textureGrad(map, uv + offset * s, dx, dy).a;
+        if (a + dh * s <= h) break;
     }
-    float t_lo = t - size;
-    float t_hi = t;
+    // The loop breaks exactly where this holds; a ray that never met the
+    // surface ends at s = 1 above it.
+    hit = a + dh * s <= h;
+    float s_lo = s - size;
+    float s_hi = s;
     float h_lo = h_prev;
     float h_hi = h;
     for (int i = 0; i < binary_steps; ++i) {
-        float mid = 0.5 * (t_lo + t_hi);
+        float mid = 0.5 * (s_lo + s_hi);
         float h_mid = textureGrad(map, uv + offset * mid, dx, dy).a;
-        bool below = 1.0 - mid <= h_mid;
-        t_hi = below ? mid : t_hi;
+        bool below = a + dh * mid <= h_mid;
+        s_hi = below ? mid : s_hi;
         h_hi = below ? h_mid : h_hi;
-        t_lo = below ? t_lo : mid;
+        s_lo = below ? s_lo : mid;
         h_lo = below ? h_lo : h_mid;
     }
-    // Above the surface at t_lo (d_lo >= 0), at or below it at t_hi
-    // (d_hi <= 0); when both are 0 the line has no zero and t_hi stands.
-    float d_lo = (1.0 - t_lo) - h_lo;
-    float d_hi = (1.0 - t_hi) - h_hi;
+    // Above the surface at s_lo (d_lo >= 0), at or below it at s_hi
+    // (d_hi <= 0) when there is a hit; when the line has no zero in the
+    // bracket, s_hi stands.
+    float d_lo = (a + dh * s_lo) - h_lo;
+    float d_hi = (a + dh * s_hi) - h_hi;
     float denom = d_lo - d_hi;
-    float t_secant = denom > 0.0 ? t_lo + (t_hi - t_lo) * (d_lo / denom) : t_hi;
-    return secant ? t_secant : t_hi;
+    float s_secant = denom > 0.0 ? s_lo + (s_hi - s_lo) * (d_lo / denom) : s_hi;
+    return secant && hit ? s_secant : s_hi;
+}
+
+// The view ray from the top of the box (height 1) at uv down to its floor
+// (height 0) at uv + offset: the floor stops every such ray, so it always
+// hits; t is the fraction of the depth travelled.
+float trace_height_field(sampler2D map, vec2 uv, vec2 offset, vec2 dx, vec2 dy, int linear_steps,
+                         int binary_steps, bool secant) {
+    bool hit;
+    return trace_segment(map, uv, offset, 1.0, -1.0, dx, dy, linear_steps, binary_steps, secant, hit);
 }

@@ -9,47 +9,56 @@
 
 namespace st::relief {
 
-Float trace_height_field(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, const Vec2& dx,
-                         const Vec2& dy, int linear_steps, int binary_steps, bool secant) {
+Float trace_segment(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, Float a, Float dh,
+                    const Vec2& dx, const Vec2& dy, int linear_steps, int binary_steps, bool secant, Mask& hit) {
     // Every read below has the entry's derivatives, so one level choice
-    // serves them all (Sampler2D::grad_levels; the same bits).
+    // serves them all (Sampler2D::grad_levels; the same bits), and only
+    // heights are read (sample_grad_alpha).
     const texel::LevelChoice levels = map.grad_levels(dx, dy);
     const Float size = Float(1.0f) / Float(float(linear_steps));
-    Float t = 0.0f;
+    Float s = 0.0f;
     Float h = map.sample_grad_alpha(uv, levels);
     Float h_prev = h;
     Int i = 0;
     exec.loop([&](Loop& loop) {
         loop.break_if(!(i < Int(linear_steps)));
         exec.assign(h_prev, h);
-        const Float t_next = t + size;
-        exec.assign(t, t_next);
-        const Float h_next = map.sample_grad_alpha(uv + offset * t_next, levels);
+        const Float s_next = s + size;
+        exec.assign(s, s_next);
+        const Float h_next = map.sample_grad_alpha(uv + offset * s_next, levels);
         exec.assign(h, h_next);
-        loop.break_if(Float(1.0f) - t_next <= h_next);
+        loop.break_if(a + dh * s_next <= h_next);
         exec.assign(i, i + 1);
     });
-    Float t_lo = t - size;
-    Float t_hi = t;
+    hit = a + dh * s <= h;
+    Float s_lo = s - size;
+    Float s_hi = s;
     Float h_lo = h_prev;
     Float h_hi = h;
     Int k = 0;
     exec.loop([&](Loop& loop) {
         loop.break_if(!(k < Int(binary_steps)));
-        const Float mid = Float(0.5f) * (t_lo + t_hi);
+        const Float mid = Float(0.5f) * (s_lo + s_hi);
         const Float h_mid = map.sample_grad_alpha(uv + offset * mid, levels);
-        const Mask below = Float(1.0f) - mid <= h_mid;
-        exec.assign(t_hi, glsl::select(below, mid, t_hi));
+        const Mask below = a + dh * mid <= h_mid;
+        exec.assign(s_hi, glsl::select(below, mid, s_hi));
         exec.assign(h_hi, glsl::select(below, h_mid, h_hi));
-        exec.assign(t_lo, glsl::select(below, t_lo, mid));
+        exec.assign(s_lo, glsl::select(below, s_lo, mid));
         exec.assign(h_lo, glsl::select(below, h_lo, h_mid));
         exec.assign(k, k + 1);
     });
-    const Float d_lo = (Float(1.0f) - t_lo) - h_lo;
-    const Float d_hi = (Float(1.0f) - t_hi) - h_hi;
+    const Float d_lo = (a + dh * s_lo) - h_lo;
+    const Float d_hi = (a + dh * s_hi) - h_hi;
     const Float denom = d_lo - d_hi;
-    const Float t_secant = glsl::select(denom > Float(0.0f), t_lo + (t_hi - t_lo) * (d_lo / denom), t_hi);
-    return secant ? t_secant : t_hi;
+    const Float s_secant = glsl::select(denom > Float(0.0f), s_lo + (s_hi - s_lo) * (d_lo / denom), s_hi);
+    return glsl::select(Mask(secant) && hit, s_secant, s_hi);
+}
+
+Float trace_height_field(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, const Vec2& dx,
+                         const Vec2& dy, int linear_steps, int binary_steps, bool secant) {
+    Mask hit;
+    return trace_segment(exec, map, uv, offset, Float(1.0f), Float(-1.0f), dx, dy, linear_steps, binary_steps,
+                         secant, hit);
 }
 
 }  // namespace st::relief
