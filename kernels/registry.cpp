@@ -59,6 +59,7 @@ const std::map<std::string, Factory<FragmentTwin>>& fragment_twins() {
         {"sample_cube_grad", [] { return std::make_unique<SampleCubeGradFragment>(); }},
         {"normal_mapping", [] { return std::make_unique<NormalMappingFragment>(); }},
         {"relief_mapping", [] { return std::make_unique<ReliefMappingFragment>(); }},
+        {"two_layer", [] { return std::make_unique<TwoLayerFragment>(); }},
     };
     return twins;
 }

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include "scene/texture_patterns.h"
 #include "texture/mip_generation.h"
 
@@ -175,6 +177,55 @@ Texture stone_colour_texture(const StoneParams& p, const std::string& sampler) {
             o[3] = 255;
         }
     generate_box_mips(t, full_chain_levels(t.width, t.height));
+    return t;
+}
+
+glm::dvec3 cube_texel_direction(int face, double sc, double tc) {
+    // GL's face selection (OpenGL 4.5, Table 8.19) inverted: sc, tc in [-1, 1].
+    switch (face) {
+    case 0: return {1.0, -tc, -sc};   // +X
+    case 1: return {-1.0, -tc, sc};   // -X
+    case 2: return {sc, 1.0, tc};     // +Y
+    case 3: return {sc, -1.0, -tc};   // -Y
+    case 4: return {sc, -tc, 1.0};    // +Z
+    default: return {-sc, -tc, -1.0}; // -Z
+    }
+}
+
+Texture sky_cube_texture(int size, glm::dvec3 sun_direction, double sun_radiance, double sun_radius_deg,
+                         const std::string& sampler) {
+    Texture t;
+    t.sampler = sampler;
+    t.format = TextureFormat::RGBA32F;
+    t.set_filter(TextureFilter::Linear);
+    t.set_wrap(TextureWrap::ClampToEdge);
+    t.cube = true;
+    t.width = t.height = size;
+    t.texels32.reserve(size_t(6) * size_t(size) * size_t(size) * 4);
+    const glm::dvec3 sun = glm::normalize(sun_direction);
+    const double cos_disc = std::cos(sun_radius_deg * 3.14159265358979323846 / 180.0);
+    for (int face = 0; face < 6; ++face)
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const glm::dvec3 d =
+                    glm::normalize(cube_texel_direction(face, 2.0 * (x + 0.5) / size - 1.0, 2.0 * (y + 0.5) / size - 1.0));
+                double rgb[3];
+                if (d.z >= 0.0) {
+                    // Paler towards the horizon.
+                    const double k = std::pow(1.0 - d.z, 3.0);
+                    const double zenith[3] = {0.25, 0.45, 0.95}, horizon[3] = {0.85, 0.88, 0.95};
+                    for (int c = 0; c < 3; ++c) rgb[c] = 1.5 * (zenith[c] + (horizon[c] - zenith[c]) * k);
+                } else {
+                    const double ground[3] = {0.22, 0.2, 0.17};
+                    for (int c = 0; c < 3; ++c) rgb[c] = ground[c];
+                }
+                const double cos_sun = glm::dot(d, sun);
+                const double glow = std::pow(std::max(cos_sun, 0.0), 64.0) * 4.0;
+                const double disc = cos_sun >= cos_disc ? sun_radiance : 0.0;
+                const double warm[3] = {1.0, 0.9, 0.75};
+                for (int c = 0; c < 3; ++c) t.texels32.push_back(float(rgb[c] + (glow + disc) * warm[c]));
+                t.texels32.push_back(1.0f);
+            }
     return t;
 }
 

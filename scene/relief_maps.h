@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "frame/frame.h"
 
 namespace st {
@@ -51,5 +53,13 @@ Texture relief_texture(const HeightField& field, double depth, const std::string
 // The stones' colour: a hue and brightness per stone, fine grain, lighter
 // joints. RGBA8 (alpha 1), trilinear, REPEAT, box-filtered mips.
 Texture stone_colour_texture(const StoneParams& p, const std::string& sampler);
+
+// An HDR sky for the environment (the paper's Fig. 9 reflects one): a
+// zenith-to-horizon gradient, a sun of `sun_radiance` in a disc of
+// `sun_radius_deg` with a glow around it, and dark ground below the horizon;
+// z is up (the surface's normal). Six square RGBA32F faces of `size`
+// texels in GL's order and orientation, LINEAR, no mips.
+Texture sky_cube_texture(int size, glm::dvec3 sun_direction, double sun_radiance, double sun_radius_deg,
+                         const std::string& sampler);
 
 }  // namespace st

@@ -116,3 +116,25 @@ TEST(ReliefMaps, FullTrilinearChains) {
 
 }  // namespace
 }  // namespace st
+
+namespace st {
+namespace {
+
+TEST(ReliefMaps, SkyCubeIsHdrWithTheSunWhereItShouldBe) {
+    const Texture sky = sky_cube_texture(16, glm::dvec3(0, 0, 1), 50.0, 10.0, "environment");
+    ASSERT_TRUE(sky.cube);
+    ASSERT_EQ(sky.texels32.size(), size_t(6 * 16 * 16 * 4));
+    auto texel = [&](int face, int x, int y, int c) { return sky.texels32[((size_t(face) * 16 + y) * 16 + x) * 4 + c]; };
+    // A sun at the zenith sits in the middle of the +Z face and is HDR.
+    EXPECT_GT(texel(4, 8, 8, 0), 20.0f);
+    // Straight down (-Z) is ground: dark, no sun.
+    EXPECT_LT(texel(5, 8, 8, 0), 0.5f);
+    // Just above the horizon on +X (z = -sc, so column 7) is sky, brighter
+    // than the ground just below it (column 8).
+    EXPECT_GT(texel(0, 7, 8, 2), 1.0f);
+    EXPECT_LT(texel(0, 8, 8, 2), 0.5f);
+    for (float v : sky.texels32) ASSERT_TRUE(std::isfinite(v));
+}
+
+}  // namespace
+}  // namespace st

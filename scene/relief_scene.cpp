@@ -45,7 +45,7 @@ std::array<glm::dvec3, 4> visible_quad(const View& v) {
 }  // namespace
 
 Frame build_relief_scene(JsonReader& scene, SceneSize size) {
-    const std::string technique = scene.choice_or("technique", "relief", {"normal-mapping", "relief"});
+    const std::string technique = scene.choice_or("technique", "relief", {"normal-mapping", "relief", "two-layer"});
 
     // The camera: `distance` from the origin, `angle_deg` from the surface
     // normal (0 looks straight down), `azimuth_deg` around it.
@@ -80,6 +80,38 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
         search->finish();
     }
 
+    // The translucent medium and the environment (two-layer and later rows).
+    const bool two_layer = technique == "two-layer";
+    DropParams drops;
+    drops.size = stones.size;
+    double liquid_depth = 0.1, ior = 1.33;
+    if (two_layer) {
+        JsonReader liquid_r = scene.object("liquid");
+        liquid_depth = liquid_r.number_or("depth", liquid_depth, 1e-4, 10.0);
+        ior = liquid_r.number_or("ior", ior, 1e-3, 10.0);
+        drops.drops = liquid_r.integer_or("drops", drops.drops, 0, 1000);
+        drops.seed = uint32_t(liquid_r.integer_or("seed", 2, 0, 1 << 30));
+        drops.level = liquid_r.number_or("level", drops.level, 0.0, 1.0);
+        drops.min_radius = liquid_r.number_or("min_radius", drops.min_radius, 1e-3, 0.5);
+        drops.max_radius = liquid_r.number_or("max_radius", drops.max_radius, drops.min_radius, 0.5);
+        drops.min_peak = liquid_r.number_or("min_peak", drops.min_peak, drops.level, 1.0);
+        drops.max_peak = liquid_r.number_or("max_peak", drops.max_peak, drops.min_peak, 1.0);
+        liquid_r.finish();
+    }
+    int sky_size = 64;
+    std::vector<double> sun{0.4, 0.3, 0.6};
+    double sun_radiance = 30.0, sun_radius = 2.0;
+    if (two_layer) {
+        JsonReader env_r = scene.object("environment");
+        sky_size = env_r.integer_or("size", sky_size, 1, 2048);
+        if (env_r.has("sun_direction")) sun = env_r.numbers("sun_direction", 3, 3, -1e6, 1e6);
+        sun_radiance = env_r.number_or("sun_radiance", sun_radiance, 0.0, 65000.0);
+        sun_radius = env_r.number_or("sun_radius_deg", sun_radius, 0.0, 90.0);
+        env_r.finish();
+        if (!(sun[0] * sun[0] + sun[1] * sun[1] + sun[2] * sun[2] > 0.0))
+            throw InputError("field 'environment.sun_direction' must not be the zero vector");
+    }
+
     JsonReader shading_r = scene.object("shading");
     const float ambient = float(shading_r.number_or("ambient", 0.15, 0.0, 10.0));
     const float specular = float(shading_r.number_or("specular", 0.35, 0.0, 100.0));
@@ -110,7 +142,7 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
 
     DrawCall draw;
     draw.vertex = "relief";
-    draw.fragment = technique == "normal-mapping" ? "normal_mapping" : "relief_mapping";
+    draw.fragment = technique == "normal-mapping" ? "normal_mapping" : two_layer ? "two_layer" : "relief_mapping";
     draw.vertices.attribute_count = 2;
     for (const glm::dvec3& c : quad) {
         draw.vertices.data.push_back(glm::vec4(float(c.x), float(c.y), 0.0f, 1.0f));
@@ -119,6 +151,11 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
     draw.indices = {0, 1, 2, 0, 2, 3};
     draw.textures.push_back(relief_texture(stone_heights(stones), depth, "relief_map"));
     draw.textures.push_back(stone_colour_texture(stones, "colour_map"));
+    if (two_layer) {
+        draw.textures.push_back(relief_texture(drop_heights(drops), liquid_depth, "liquid_map"));
+        draw.textures.push_back(
+            sky_cube_texture(sky_size, glm::dvec3(sun[0], sun[1], sun[2]), sun_radiance, sun_radius, "environment"));
+    }
     draw.uniforms = {uniform("view_proj", view_proj),
                      uniform("eye", glm::vec3(v.eye)),
                      uniform("light", glm::vec3(float(lp[0]), float(lp[1]), float(lp[2]))),
@@ -126,7 +163,13 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
                      uniform("specular", specular)};
     if (technique != "normal-mapping") {
         draw.uniforms.push_back(uniform("depth", float(depth)));
-        draw.uniforms.push_back(uniform("world_depth", float(depth / uv_per_unit)));
+        if (two_layer) {
+            draw.uniforms.push_back(uniform("liquid_depth", float(liquid_depth)));
+            draw.uniforms.push_back(uniform("world_per_uv", float(1.0 / uv_per_unit)));
+            draw.uniforms.push_back(uniform("ior", float(ior)));
+        } else {
+            draw.uniforms.push_back(uniform("world_depth", float(depth / uv_per_unit)));
+        }
         draw.uniforms.push_back(int_uniform("linear_steps", linear_steps));
         draw.uniforms.push_back(int_uniform("binary_steps", binary_steps));
         draw.uniforms.push_back(int_uniform("secant", secant ? 1 : 0));

@@ -176,6 +176,23 @@ ST_INLINE auto if_else(Mask c, Then then, Otherwise otherwise) {
     return glsl::select(c, then(), otherwise());
 }
 
+// GLSL reflect(I, N), as Mesa's built-in writes it: I - 2 * (dot(N, I) * N)
+// (the factor 2 is exact, so its place in the product does not matter).
+ST_INLINE Vec3 reflect(const Vec3& i, const Vec3& n) {
+    const Float d = dot(n, i);
+    return i - Vec3(Float(2.0f)) * (Vec3(d) * n);
+}
+
+// GLSL refract(I, N, eta), as Mesa's built-in writes it:
+// k = 1 - eta * (eta * (1 - dot(N, I) * dot(N, I))); the zero vector where
+// k < 0 (total internal reflection), else eta * I - (eta * dot(N, I) + sqrt(k)) * N.
+ST_INLINE Vec3 refract(const Vec3& i, const Vec3& n, Float eta) {
+    const Float n_dot_i = dot(n, i);
+    const Float k = Float(1.0f) - eta * (eta * (Float(1.0f) - n_dot_i * n_dot_i));
+    const Vec3 r = Vec3(eta) * i - Vec3(eta * n_dot_i + simd::sqrt(k)) * n;
+    return glsl::select(k < Float(0.0f), Vec3(Float(0.0f)), r);
+}
+
 glm::vec4 mul(const glm::mat4& m, const glm::vec4& v);  // GLSL m * v
 
 }  // namespace st::glsl

@@ -19,3 +19,14 @@ vec3 blinn_phong(vec3 albedo, vec3 n, vec3 l, vec3 v, float ambient, float specu
 vec3 decode_normal(vec4 texel) {
     return normalize(texel.rgb * 2.0 - 1.0);
 }
+
+// Timonen Sec. 2 (after Blinn): the unpolarised Fresnel reflectance at a
+// boundary from index n1 into n2, cos_i the cosine of the angle of
+// incidence (a1), cos_t that of refraction (a3); I_refr = 1 - I_refl. The
+// denominators are kept from 0 (grazing on both sides), where the terms
+// tend to 1.
+float fresnel_reflectance(float n1, float n2, float cos_i, float cos_t) {
+    float rs = (n1 * cos_i - n2 * cos_t) / max(n1 * cos_i + n2 * cos_t, 1e-6);
+    float rp = (n1 * cos_t - n2 * cos_i) / max(n1 * cos_t + n2 * cos_i, 1e-6);
+    return (rs * rs + rp * rp) * 0.5;
+}

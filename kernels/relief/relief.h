@@ -10,6 +10,7 @@
 namespace st {
 
 class Sampler2D;
+class SamplerCube;
 
 class ReliefVertex final : public VertexTwin {  // relief.vert
 public:
@@ -49,6 +50,23 @@ public:
 private:
     ReliefLighting u_;
     float depth_ = 0.0f, world_depth_ = 0.0f;
+    int linear_steps_ = 1, binary_steps_ = 0;
+    bool secant_ = false;
+};
+
+class TwoLayerFragment final : public FragmentProgram<TwoLayerFragment> {  // two_layer.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    Vec3 shade_solid(const Vec2& uv, const Vec3& pos, const Vec3& to_viewer, const Vec2& dx, const Vec2& dy) const;
+
+    ReliefLighting u_;
+    const Sampler2D* liquid_map_ = nullptr;
+    const SamplerCube* environment_ = nullptr;
+    float depth_ = 0.0f, liquid_depth_ = 0.0f, world_per_uv_ = 0.0f, ior_ = 1.0f;
     int linear_steps_ = 1, binary_steps_ = 0;
     bool secant_ = false;
 };

@@ -22,4 +22,10 @@ Vec3 decode_normal(const Vec4& texel) {
     return glsl::normalize(texel.xyz() * Float(2.0f) - Vec3(Float(1.0f)));
 }
 
+Float fresnel_reflectance(Float n1, Float n2, Float cos_i, Float cos_t) {
+    const Float rs = (n1 * cos_i - n2 * cos_t) / glsl::max(n1 * cos_i + n2 * cos_t, Float(1e-6f));
+    const Float rp = (n1 * cos_t - n2 * cos_i) / glsl::max(n1 * cos_t + n2 * cos_i, Float(1e-6f));
+    return (rs * rs + rp * rp) * Float(0.5f);
+}
+
 }  // namespace st::relief
