@@ -8,16 +8,19 @@
 // entry point's derivatives (textureGrad), so that every step of a quad
 // reads the level its entry reads. Twin: kernels/relief/relief_search.cpp.
 
-// The first point at or below the surface on a ray segment through a
-// layer's box: it starts at `uv` at height `a` (in the layer's units) and
-// ends at uv + offset at height a + dh. s in [0, 1] is the fraction of the
-// segment: linear_steps equal steps until the ray is at or below the
-// surface, binary_steps halvings of that last step, then, if `secant`, the
-// zero of the straight line through the ray-minus-surface differences at
-// the bracket's ends. `hit` is false when the segment stays above the
-// surface (a rising ray leaves the box); then s is 1.
-float trace_segment(sampler2D map, vec2 uv, vec2 offset, float a, float dh, vec2 dx, vec2 dy, int linear_steps,
-                    int binary_steps, bool secant, out bool hit) {
+// The first point where a ray segment through a layer's box crosses the
+// surface: it starts at `uv` at height `a` (in the layer's units) and ends
+// at uv + offset at height a + dh. With side = 1 the ray starts above the
+// surface and the crossing is the first point at or below it; with
+// side = -1 it starts below (inside a medium) and the crossing is the first
+// point at or above it (multiplying both sides by 1 changes no bit). s in
+// [0, 1] is the fraction of the segment: linear_steps equal steps until
+// the ray has crossed, binary_steps halvings of that last step, then, if
+// `secant`, the zero of the straight line through the ray-minus-surface
+// differences at the bracket's ends. `hit` is false when the segment never
+// crosses (a rising ray leaves the box); then s is 1.
+float trace_segment(sampler2D map, vec2 uv, vec2 offset, float a, float dh, float side, vec2 dx, vec2 dy,
+                    int linear_steps, int binary_steps, bool secant, out bool hit) {
     float size = 1.0 / float(linear_steps);
     float s = 0.0;
     float h = textureGrad(map, uv, dx, dy).a;
@@ -26,11 +29,11 @@ float trace_segment(sampler2D map, vec2 uv, vec2 offset, float a, float dh, vec2
         h_prev = h;
         s += size;
         h = textureGrad(map, uv + offset * s, dx, dy).a;
-        if (a + dh * s <= h) break;
+        if (side * (a + dh * s) <= side * h) break;
     }
     // The loop breaks exactly where this holds; a ray that never met the
     // surface ends at s = 1 above it.
-    hit = a + dh * s <= h;
+    hit = side * (a + dh * s) <= side * h;
     float s_lo = s - size;
     float s_hi = s;
     float h_lo = h_prev;
@@ -38,17 +41,17 @@ float trace_segment(sampler2D map, vec2 uv, vec2 offset, float a, float dh, vec2
     for (int i = 0; i < binary_steps; ++i) {
         float mid = 0.5 * (s_lo + s_hi);
         float h_mid = textureGrad(map, uv + offset * mid, dx, dy).a;
-        bool below = a + dh * mid <= h_mid;
+        bool below = side * (a + dh * mid) <= side * h_mid;
         s_hi = below ? mid : s_hi;
         h_hi = below ? h_mid : h_hi;
         s_lo = below ? s_lo : mid;
         h_lo = below ? h_lo : h_mid;
     }
-    // Above the surface at s_lo (d_lo >= 0), at or below it at s_hi
-    // (d_hi <= 0) when there is a hit; when the line has no zero in the
-    // bracket, s_hi stands.
-    float d_lo = (a + dh * s_lo) - h_lo;
-    float d_hi = (a + dh * s_hi) - h_hi;
+    // Before the crossing at s_lo (d_lo >= 0), past it at s_hi (d_hi <= 0)
+    // when there is a hit; when the line has no zero in the bracket, s_hi
+    // stands.
+    float d_lo = side * ((a + dh * s_lo) - h_lo);
+    float d_hi = side * ((a + dh * s_hi) - h_hi);
     float denom = d_lo - d_hi;
     float s_secant = denom > 0.0 ? s_lo + (s_hi - s_lo) * (d_lo / denom) : s_hi;
     return secant && hit ? s_secant : s_hi;
@@ -60,5 +63,5 @@ float trace_segment(sampler2D map, vec2 uv, vec2 offset, float a, float dh, vec2
 float trace_height_field(sampler2D map, vec2 uv, vec2 offset, vec2 dx, vec2 dy, int linear_steps,
                          int binary_steps, bool secant) {
     bool hit;
-    return trace_segment(map, uv, offset, 1.0, -1.0, dx, dy, linear_steps, binary_steps, secant, hit);
+    return trace_segment(map, uv, offset, 1.0, -1.0, 1.0, dx, dy, linear_steps, binary_steps, secant, hit);
 }

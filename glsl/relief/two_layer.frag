@@ -71,7 +71,7 @@ void main() {
         // Refraction: down to the solid layer's floor, which stops it.
         float down = (depth - z_liquid) / max(-refracted.z, 1e-4);
         vec2 down_offset = refracted.xy * down;
-        float s = trace_segment(relief_map, at_uv, down_offset, a, -a, dx, dy, linear_steps, binary_steps, secant,
+        float s = trace_segment(relief_map, at_uv, down_offset, a, -a, 1.0, dx, dy, linear_steps, binary_steps, secant,
                                 hit);
         vec3 refraction = shade_solid(at_uv + down_offset * s, at + refracted * (s * down * world_per_uv),
                                       -refracted, dx, dy);
@@ -79,7 +79,7 @@ void main() {
         // the way or leaving for the environment.
         float up = z_liquid / max(reflected.z, 1e-4);
         vec2 up_offset = reflected.xy * up;
-        float s_up = trace_segment(relief_map, at_uv, up_offset, a, 1.0 - a, dx, dy, linear_steps, binary_steps,
+        float s_up = trace_segment(relief_map, at_uv, up_offset, a, 1.0 - a, 1.0, dx, dy, linear_steps, binary_steps,
                                    secant, hit);
         vec3 local = shade_solid(at_uv + up_offset * s_up, at + reflected * (s_up * up * world_per_uv), -reflected,
                                  dx, dy);

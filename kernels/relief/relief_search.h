@@ -13,7 +13,8 @@ namespace st::relief {
 // `exec` is the invocation's execution mask: the linear search is a loop
 // whose lanes leave at different steps.
 Float trace_segment(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, Float a, Float dh,
-                    const Vec2& dx, const Vec2& dy, int linear_steps, int binary_steps, bool secant, Mask& hit);
+                    Float side, const Vec2& dx, const Vec2& dy, int linear_steps, int binary_steps, bool secant,
+                    Mask& hit);
 
 // `exec` is the invocation's execution mask: the linear search is a loop
 // whose lanes leave at different steps.

@@ -75,14 +75,14 @@ Vec4 TwoLayerFragment::main(const Fragment& frag) const {
             Mask hit;
             const Float down = (Float(depth_) - z_liquid) / glsl::max(-refracted.z, Float(1e-4f));
             const Vec2 down_offset = Vec2(refracted.x, refracted.y) * down;
-            const Float s = relief::trace_segment(exec, *u_.relief_map, at_uv, down_offset, a, -a, dx,
+            const Float s = relief::trace_segment(exec, *u_.relief_map, at_uv, down_offset, a, -a, Float(1.0f), dx,
                                                   dy, linear_steps_, binary_steps_, secant_, hit);
             const Vec3 refraction = shade_solid(at_uv + down_offset * s,
                                                 at + refracted * (s * down * Float(world_per_uv_)),
                                                 Vec3(-refracted.x, -refracted.y, -refracted.z), dx, dy);
             const Float up = z_liquid / glsl::max(reflected.z, Float(1e-4f));
             const Vec2 up_offset = Vec2(reflected.x, reflected.y) * up;
-            const Float s_up = relief::trace_segment(exec, *u_.relief_map, at_uv, up_offset, a, Float(1.0f) - a, dx,
+            const Float s_up = relief::trace_segment(exec, *u_.relief_map, at_uv, up_offset, a, Float(1.0f) - a, Float(1.0f), dx,
                                                      dy, linear_steps_, binary_steps_, secant_, hit);
             const Vec3 local = shade_solid(at_uv + up_offset * s_up, at + reflected * (s_up * up * Float(world_per_uv_)),
                                            Vec3(-reflected.x, -reflected.y, -reflected.z), dx, dy);
