@@ -20,7 +20,7 @@ namespace st {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr int kMaxLinearSteps = 512, kMaxBinarySteps = 32;
+constexpr int kMaxLinearSteps = 512, kMaxBinarySteps = 32, kMaxCrossings = 16;
 
 struct View {
     glm::dvec3 eye, forward, right, up;
@@ -45,7 +45,7 @@ std::array<glm::dvec3, 4> visible_quad(const View& v) {
 }  // namespace
 
 Frame build_relief_scene(JsonReader& scene, SceneSize size) {
-    const std::string technique = scene.choice_or("technique", "relief", {"normal-mapping", "relief", "two-layer"});
+    const std::string technique = scene.choice_or("technique", "relief", {"normal-mapping", "relief", "two-layer", "occlusion", "absorption"});
 
     // The camera: `distance` from the origin, `angle_deg` from the surface
     // normal (0 looks straight down), `azimuth_deg` around it.
@@ -81,10 +81,15 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
     }
 
     // The translucent medium and the environment (two-layer and later rows).
-    const bool two_layer = technique == "two-layer";
+    // Rows 3-5 are one shader family, each row switching on what it adds.
+    const bool two_layer = technique == "two-layer" || technique == "occlusion" || technique == "absorption";
+    const bool occlusion = technique == "occlusion" || technique == "absorption";
+    const bool absorption = technique == "absorption";
     DropParams drops;
     drops.size = stones.size;
-    double liquid_depth = 0.1, ior = 1.33;
+    double liquid_depth = 0.1, ior = 1.33, shadow_bias = 0.02;
+    int max_crossings = 4;
+    glm::vec3 half_distance(1.0f);
     if (two_layer) {
         JsonReader liquid_r = scene.object("liquid");
         liquid_depth = liquid_r.number_or("depth", liquid_depth, 1e-4, 10.0);
@@ -96,6 +101,14 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
         drops.max_radius = liquid_r.number_or("max_radius", drops.max_radius, drops.min_radius, 0.5);
         drops.min_peak = liquid_r.number_or("min_peak", drops.min_peak, drops.level, 1.0);
         drops.max_peak = liquid_r.number_or("max_peak", drops.max_peak, drops.min_peak, 1.0);
+        if (absorption) {
+            const std::vector<double> d0 = liquid_r.numbers("half_distance", 3, 3, 1e-6, 1e6);
+            half_distance = glm::vec3(float(d0[0]), float(d0[1]), float(d0[2]));
+        }
+        if (occlusion) {
+            max_crossings = liquid_r.integer_or("max_crossings", max_crossings, 1, kMaxCrossings);
+            shadow_bias = liquid_r.number_or("shadow_bias", shadow_bias, 0.0, 1.0);
+        }
         liquid_r.finish();
     }
     int sky_size = 64;
@@ -167,6 +180,11 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
             draw.uniforms.push_back(uniform("liquid_depth", float(liquid_depth)));
             draw.uniforms.push_back(uniform("world_per_uv", float(1.0 / uv_per_unit)));
             draw.uniforms.push_back(uniform("ior", float(ior)));
+            draw.uniforms.push_back(int_uniform("occlusion", occlusion ? 1 : 0));
+            draw.uniforms.push_back(int_uniform("absorption", absorption ? 1 : 0));
+            draw.uniforms.push_back(int_uniform("max_crossings", max_crossings));
+            draw.uniforms.push_back(uniform("shadow_bias", float(shadow_bias)));
+            draw.uniforms.push_back(uniform("half_distance", half_distance));
         } else {
             draw.uniforms.push_back(uniform("world_depth", float(depth / uv_per_unit)));
         }

@@ -3,7 +3,10 @@
 // squarings, so that no pow() and its log2/exp2 approximations enter).
 // Twin: kernels/relief/relief_shading.cpp.
 
-vec3 blinn_phong(vec3 albedo, vec3 n, vec3 l, vec3 v, float ambient, float specular) {
+// `light` is the light that reaches the point (Algorithm 2's coefficient,
+// per channel); blinn_phong() is the fully lit case (multiplying by 1
+// changes no bit).
+vec3 lit_blinn_phong(vec3 albedo, vec3 n, vec3 l, vec3 v, float ambient, float specular, vec3 light) {
     float diffuse = max(dot(n, l), 0.0);
     vec3 h = normalize(l + v);
     float s = max(dot(n, h), 0.0);
@@ -12,7 +15,11 @@ vec3 blinn_phong(vec3 albedo, vec3 n, vec3 l, vec3 v, float ambient, float specu
     s = s * s;
     s = s * s;
     s = s * s;
-    return albedo * (ambient + diffuse) + vec3(specular * s);
+    return albedo * (ambient + diffuse * light) + vec3(specular * s) * light;
+}
+
+vec3 blinn_phong(vec3 albedo, vec3 n, vec3 l, vec3 v, float ambient, float specular) {
+    return lit_blinn_phong(albedo, n, l, v, ambient, specular, vec3(1.0));
 }
 
 // A relief map texel's normal: stored n * 0.5 + 0.5 in RGB.

@@ -1,6 +1,8 @@
 #version 450 core
-// two_layer.frag: Table 1's third row, two-layer translucency (Timonen
-// Algorithm 1). Two relief layers with their own boxes below the polygon:
+// two_layer.frag: Table 1's rows 3 to 5, switched on cumulatively as the
+// paper measures them: two-layer translucency (Timonen Algorithm 1), light
+// occlusion (Algorithm 2, `occlusion`) and hued absorption (Eq. 1,
+// `absorption`). Two relief layers with their own boxes below the polygon:
 // the solid one (stones, relief_map) and the surface of the translucent
 // medium (liquid_map). The view ray meets the nearer of the two; on the
 // solid layer the fragment is shaded as in relief mapping; on the medium the
@@ -29,13 +31,76 @@ uniform float ior;           // the medium's index of refraction (outside: 1)
 uniform int linear_steps;
 uniform int binary_steps;
 uniform bool secant;
+uniform bool occlusion;      // row 4: the light traced back through the layers
+uniform bool absorption;     // row 5: the medium absorbs per channel
+uniform int max_crossings;   // medium boundaries a light ray is followed through
+uniform float shadow_bias;   // solid-layer heights the light ray starts above its point
+uniform vec3 half_distance;  // Eq. 1's d0 per channel, world units
 
-// The solid layer at a hit: its normal and colour there, lit from the
-// light, seen along to_viewer.
-vec3 shade_solid(vec2 uv, vec3 pos, vec3 to_viewer, vec2 dx, vec2 dy) {
+// Eq. 1, I = 1 - (1/2)^(d/d0), read as the part of the light the medium
+// absorbs over a distance d: the part that survives is (1/2)^(d/d0), so d0
+// is the distance over which a channel halves (docs/relief.md).
+vec3 surviving(float d) {
+    return absorption ? exp2(-d / half_distance) : vec3(1.0);
+}
+
+// Algorithm 2: the light reaching a point of the solid layer at uv, z
+// texture units below the polygon, from the direction l (towards the
+// light). The light ray is followed backwards up to the top of the boxes:
+// the solid layer blocks it; each boundary of the medium it passes keeps
+// the refracted part 1 - R, its direction unchanged (the paper's footnote
+// 4); with absorption the medium also absorbs along the ray's length inside
+// it. Crossings are taken past the boundary (no secant step), so that the
+// next search starts on the far side.
+vec3 light_occlusion(vec2 uv, float z, vec3 l, vec2 dx, vec2 dy) {
+    float total = z / max(l.z, 1e-4);  // texture units from the point to the top
+    vec2 offset = l.xy * total;
+    float a = min(1.0 - z / depth + shadow_bias, 1.0);
+    bool blocked;
+    trace_segment(relief_map, uv, offset, a, 1.0 - a, 1.0, dx, dy, linear_steps, binary_steps, false, blocked);
+    float a_liquid = 1.0 - z / liquid_depth;  // the point's height in the medium's units
+    float side = a_liquid < textureGrad(liquid_map, uv, dx, dy).a ? -1.0 : 1.0;  // -1: inside the medium
+    float lit = 1.0;
+    float inside = 0.0;  // texture units of the ray inside the medium
+    float s0 = 0.0;
+    for (int i = 0; i < max_crossings; ++i) {
+        float start = a_liquid + (1.0 - a_liquid) * s0;
+        bool crossed;
+        float s = trace_segment(liquid_map, uv + offset * s0, offset * (1.0 - s0), start, 1.0 - start, side, dx,
+                                dy, linear_steps, binary_steps, false, crossed);
+        if (!crossed) break;
+        // The step as its own value: NIR rewrites (s0 + d) - s0 as d (an
+        // inexact-float rule, docs/llvmpipe/nir-algebraic.md), so the shader
+        // says d itself and both sides compute the same.
+        float step = (1.0 - s0) * s;
+        float s_at = s0 + step;
+        vec3 n = decode_normal(textureGrad(liquid_map, uv + offset * s_at, dx, dy));
+        // The light passes this boundary on its way down: into the medium
+        // where the backward ray leaves it.
+        float n1 = side < 0.0 ? 1.0 : ior;
+        float n2 = side < 0.0 ? ior : 1.0;
+        float cos_i = abs(dot(n, l));
+        float sin_t2 = (n1 / n2) * (n1 / n2) * (1.0 - cos_i * cos_i);
+        float r = sin_t2 >= 1.0 ? 1.0 : fresnel_reflectance(n1, n2, cos_i, sqrt(1.0 - sin_t2));
+        lit = lit * (1.0 - r);
+        inside = side < 0.0 ? inside + step * total : inside;
+        side = -side;
+        s0 = s_at;
+    }
+    inside = side < 0.0 ? inside + (1.0 - s0) * total : inside;
+    vec3 survived = surviving(inside * world_per_uv);
+    return blocked || l.z <= 0.0 ? vec3(0.0) : lit * survived;
+}
+
+// The solid layer at a hit z texture units deep: its normal and colour
+// there, lit from the light (through the layers with `occlusion`), seen
+// along to_viewer.
+vec3 shade_solid(vec2 uv, vec3 pos, float z, vec3 to_viewer, vec2 dx, vec2 dy) {
     vec3 n = decode_normal(textureGrad(relief_map, uv, dx, dy));
     vec3 albedo = textureGrad(colour_map, uv, dx, dy).rgb;
-    return blinn_phong(albedo, n, normalize(light - pos), to_viewer, ambient, specular);
+    vec3 l = normalize(light - pos);
+    vec3 lit = occlusion ? light_occlusion(uv, z, l, dx, dy) : vec3(1.0);
+    return lit_blinn_phong(albedo, n, l, to_viewer, ambient, specular, lit);
 }
 
 void main() {
@@ -54,7 +119,8 @@ void main() {
     float z_liquid = t_liquid * liquid_depth;
     vec3 colour;
     if (z_solid <= z_liquid) {
-        colour = shade_solid(uv - v.xy * (z_solid / v.z), p - v * (z_solid * world_per_uv / v.z), v, dx, dy);
+        colour = shade_solid(uv - v.xy * (z_solid / v.z), p - v * (z_solid * world_per_uv / v.z), z_solid, v, dx,
+                             dy);
     } else {
         vec2 at_uv = uv - v.xy * (z_liquid / v.z);
         vec3 at = p - v * (z_liquid * world_per_uv / v.z);
@@ -73,16 +139,18 @@ void main() {
         vec2 down_offset = refracted.xy * down;
         float s = trace_segment(relief_map, at_uv, down_offset, a, -a, 1.0, dx, dy, linear_steps, binary_steps, secant,
                                 hit);
-        vec3 refraction = shade_solid(at_uv + down_offset * s, at + refracted * (s * down * world_per_uv),
-                                      -refracted, dx, dy);
+        float refracted_length = s * down;  // texture units, all of it taken as inside the medium
+        vec3 refraction = shade_solid(at_uv + down_offset * s, at + refracted * (refracted_length * world_per_uv),
+                                      z_liquid + (depth - z_liquid) * s, -refracted, dx, dy) *
+                          surviving(refracted_length * world_per_uv);
         // Reflection: up to the top of the box, meeting the solid layer on
         // the way or leaving for the environment.
         float up = z_liquid / max(reflected.z, 1e-4);
         vec2 up_offset = reflected.xy * up;
         float s_up = trace_segment(relief_map, at_uv, up_offset, a, 1.0 - a, 1.0, dx, dy, linear_steps, binary_steps,
                                    secant, hit);
-        vec3 local = shade_solid(at_uv + up_offset * s_up, at + reflected * (s_up * up * world_per_uv), -reflected,
-                                 dx, dy);
+        vec3 local = shade_solid(at_uv + up_offset * s_up, at + reflected * (s_up * up * world_per_uv),
+                                 z_liquid - z_liquid * s_up, -reflected, dx, dy);
         vec3 reflection = hit ? local : textureLod(environment, reflected, 0.0).rgb;
         colour = (1.0 - r) * refraction + r * reflection;
     }

@@ -61,7 +61,10 @@ public:
     Vec4 main(const Fragment& frag) const;
 
 private:
-    Vec3 shade_solid(const Vec2& uv, const Vec3& pos, const Vec3& to_viewer, const Vec2& dx, const Vec2& dy) const;
+    Vec3 surviving(Float d) const;
+    Vec3 light_occlusion(Exec& exec, const Vec2& uv, Float z, const Vec3& l, const Vec2& dx, const Vec2& dy) const;
+    Vec3 shade_solid(Exec& exec, const Vec2& uv, const Vec3& pos, Float z, const Vec3& to_viewer, const Vec2& dx,
+                     const Vec2& dy) const;
 
     ReliefLighting u_;
     const Sampler2D* liquid_map_ = nullptr;
@@ -69,6 +72,10 @@ private:
     float depth_ = 0.0f, liquid_depth_ = 0.0f, world_per_uv_ = 0.0f, ior_ = 1.0f;
     int linear_steps_ = 1, binary_steps_ = 0;
     bool secant_ = false;
+    bool occlusion_ = false, absorption_ = false;
+    int max_crossings_ = 0;
+    float shadow_bias_ = 0.0f;
+    glm::vec3 half_distance_{1.0f};
 };
 
 }  // namespace st

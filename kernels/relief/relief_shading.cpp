@@ -6,7 +6,8 @@
 
 namespace st::relief {
 
-Vec3 blinn_phong(const Vec3& albedo, const Vec3& n, const Vec3& l, const Vec3& v, Float ambient, Float specular) {
+Vec3 lit_blinn_phong(const Vec3& albedo, const Vec3& n, const Vec3& l, const Vec3& v, Float ambient, Float specular,
+                     const Vec3& light) {
     const Float diffuse = glsl::max(glsl::dot(n, l), Float(0.0f));
     const Vec3 h = glsl::normalize(l + v);
     Float s = glsl::max(glsl::dot(n, h), Float(0.0f));
@@ -15,7 +16,11 @@ Vec3 blinn_phong(const Vec3& albedo, const Vec3& n, const Vec3& l, const Vec3& v
     s = s * s;
     s = s * s;
     s = s * s;
-    return albedo * (ambient + diffuse) + Vec3(specular * s);
+    return albedo * (Vec3(ambient) + Vec3(diffuse) * light) + Vec3(specular * s) * light;
+}
+
+Vec3 blinn_phong(const Vec3& albedo, const Vec3& n, const Vec3& l, const Vec3& v, Float ambient, Float specular) {
+    return lit_blinn_phong(albedo, n, l, v, ambient, specular, Vec3(Float(1.0f)));
 }
 
 Vec3 decode_normal(const Vec4& texel) {

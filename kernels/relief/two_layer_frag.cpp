@@ -25,16 +25,71 @@ void TwoLayerFragment::bind(const Bindings& b) {
     linear_steps_ = b.get_int("linear_steps");
     binary_steps_ = b.get_int("binary_steps");
     secant_ = b.get_int("secant") != 0;
+    occlusion_ = b.get_int("occlusion") != 0;
+    absorption_ = b.get_int("absorption") != 0;
+    max_crossings_ = b.get_int("max_crossings");
+    shadow_bias_ = b.get_float("shadow_bias");
+    half_distance_ = b.get_vec3("half_distance");
 }
 
 uint32_t TwoLayerFragment::inputs_read() const { return reads(v_position, "xyz") | reads(v_uv, "xy"); }
 
-Vec3 TwoLayerFragment::shade_solid(const Vec2& uv, const Vec3& pos, const Vec3& to_viewer, const Vec2& dx,
-                                   const Vec2& dy) const {
+Vec3 TwoLayerFragment::surviving(Float d) const {
+    if (!absorption_) return Vec3(Float(1.0f));  // a uniform: one side for every lane
+    const Vec3 x = Vec3(-d) / Vec3(half_distance_);
+    return Vec3(glsl::exp2(x.x), glsl::exp2(x.y), glsl::exp2(x.z));
+}
+
+Vec3 TwoLayerFragment::light_occlusion(Exec& exec, const Vec2& uv, Float z, const Vec3& l, const Vec2& dx,
+                                       const Vec2& dy) const {
+    const Float total = z / glsl::max(l.z, Float(1e-4f));
+    const Vec2 offset = Vec2(l.x, l.y) * total;
+    const Float a = glsl::min(Float(1.0f) - z / Float(depth_) + Float(shadow_bias_), Float(1.0f));
+    Mask blocked;
+    relief::trace_segment(exec, *u_.relief_map, uv, offset, a, Float(1.0f) - a, Float(1.0f), dx, dy, linear_steps_,
+                          binary_steps_, false, blocked);
+    const Float a_liquid = Float(1.0f) - z / Float(liquid_depth_);
+    Float side = glsl::select(a_liquid < liquid_map_->sample_grad(uv, dx, dy).w, Float(-1.0f), Float(1.0f));
+    Float lit = 1.0f;
+    Float inside = 0.0f;
+    Float s0 = 0.0f;
+    Int i = 0;
+    exec.loop([&](Loop& loop) {
+        loop.break_if(!(i < Int(max_crossings_)));
+        const Float start = a_liquid + (Float(1.0f) - a_liquid) * s0;
+        Mask crossed;
+        const Float s = relief::trace_segment(exec, *liquid_map_, uv + offset * s0, offset * (Float(1.0f) - s0), start,
+                                              Float(1.0f) - start, side, dx, dy, linear_steps_, binary_steps_, false,
+                                              crossed);
+        loop.break_if(!crossed);
+        const Float step = (Float(1.0f) - s0) * s;
+        const Float s_at = s0 + step;
+        const Vec3 n = relief::decode_normal(liquid_map_->sample_grad(uv + offset * s_at, dx, dy));
+        const Mask entering = side < Float(0.0f);
+        const Float n1 = glsl::select(entering, Float(1.0f), Float(ior_));
+        const Float n2 = glsl::select(entering, Float(ior_), Float(1.0f));
+        const Float cos_i = glsl::abs(glsl::dot(n, l));
+        const Float sin_t2 = (n1 / n2) * (n1 / n2) * (Float(1.0f) - cos_i * cos_i);
+        const Float r = glsl::select(sin_t2 >= Float(1.0f), Float(1.0f),
+                                     relief::fresnel_reflectance(n1, n2, cos_i, simd::sqrt(Float(1.0f) - sin_t2)));
+        exec.assign(lit, lit * (Float(1.0f) - r));
+        exec.assign(inside, glsl::select(entering, inside + step * total, inside));
+        exec.assign(side, -side);
+        exec.assign(s0, s_at);
+        exec.assign(i, i + 1);
+    });
+    inside = glsl::select(side < Float(0.0f), inside + (Float(1.0f) - s0) * total, inside);
+    const Vec3 survived = surviving(inside * Float(world_per_uv_));
+    return glsl::select(blocked || l.z <= Float(0.0f), Vec3(Float(0.0f)), Vec3(lit) * survived);
+}
+
+Vec3 TwoLayerFragment::shade_solid(Exec& exec, const Vec2& uv, const Vec3& pos, Float z, const Vec3& to_viewer,
+                                   const Vec2& dx, const Vec2& dy) const {
     const Vec3 n = relief::decode_normal(u_.relief_map->sample_grad(uv, dx, dy));
     const Vec3 albedo = u_.colour_map->sample_grad(uv, dx, dy).xyz();
-    return relief::blinn_phong(albedo, n, glsl::normalize(Vec3(u_.light) - pos), to_viewer, Float(u_.ambient),
-                               Float(u_.specular));
+    const Vec3 l = glsl::normalize(Vec3(u_.light) - pos);
+    const Vec3 lit = occlusion_ ? light_occlusion(exec, uv, z, l, dx, dy) : Vec3(Float(1.0f));
+    return relief::lit_blinn_phong(albedo, n, l, to_viewer, Float(u_.ambient), Float(u_.specular), lit);
 }
 
 Vec4 TwoLayerFragment::main(const Fragment& frag) const {
@@ -57,8 +112,8 @@ Vec4 TwoLayerFragment::main(const Fragment& frag) const {
     exec.if_else(
         z_solid <= z_liquid,
         [&] {
-            exec.assign(colour, shade_solid(uv - v_xy * (z_solid / v.z),
-                                            p - v * (z_solid * Float(world_per_uv_) / v.z), v, dx, dy));
+            exec.assign(colour, shade_solid(exec, uv - v_xy * (z_solid / v.z),
+                                            p - v * (z_solid * Float(world_per_uv_) / v.z), z_solid, v, dx, dy));
         },
         [&] {
             const Vec2 at_uv = uv - v_xy * (z_liquid / v.z);
@@ -77,14 +132,18 @@ Vec4 TwoLayerFragment::main(const Fragment& frag) const {
             const Vec2 down_offset = Vec2(refracted.x, refracted.y) * down;
             const Float s = relief::trace_segment(exec, *u_.relief_map, at_uv, down_offset, a, -a, Float(1.0f), dx,
                                                   dy, linear_steps_, binary_steps_, secant_, hit);
-            const Vec3 refraction = shade_solid(at_uv + down_offset * s,
-                                                at + refracted * (s * down * Float(world_per_uv_)),
-                                                Vec3(-refracted.x, -refracted.y, -refracted.z), dx, dy);
+            const Float refracted_length = s * down;
+            const Vec3 refraction =
+                shade_solid(exec, at_uv + down_offset * s, at + refracted * (refracted_length * Float(world_per_uv_)),
+                            z_liquid + (Float(depth_) - z_liquid) * s, Vec3(-refracted.x, -refracted.y, -refracted.z),
+                            dx, dy) *
+                surviving(refracted_length * Float(world_per_uv_));
             const Float up = z_liquid / glsl::max(reflected.z, Float(1e-4f));
             const Vec2 up_offset = Vec2(reflected.x, reflected.y) * up;
             const Float s_up = relief::trace_segment(exec, *u_.relief_map, at_uv, up_offset, a, Float(1.0f) - a, Float(1.0f), dx,
                                                      dy, linear_steps_, binary_steps_, secant_, hit);
-            const Vec3 local = shade_solid(at_uv + up_offset * s_up, at + reflected * (s_up * up * Float(world_per_uv_)),
+            const Vec3 local = shade_solid(exec, at_uv + up_offset * s_up,
+                                           at + reflected * (s_up * up * Float(world_per_uv_)), z_liquid - z_liquid * s_up,
                                            Vec3(-reflected.x, -reflected.y, -reflected.z), dx, dy);
             const Vec3 reflection = glsl::select(hit, local, environment_->sample_lod(reflected, Float(0.0f)).xyz());
             exec.assign(colour, (Float(1.0f) - r) * refraction + r * reflection);
