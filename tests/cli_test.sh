@@ -135,6 +135,15 @@ for line in sys.stdin:
     expect_bad_input "relief view past the horizon" "$bin" render relief-normal-mapping --set view.angle_deg=80
     expect_bad_input "unknown relief technique" "$bin" render relief-normal-mapping --set technique='"raymarch"'
     expect_bad_input "relief map too small" "$bin" render relief-normal-mapping --set surface.map_size=2
+    expect_bad_input "relief IOR at 0" "$bin" render relief-two-layer --set liquid.ior=0
+    expect_bad_input "relief IOR below 0" "$bin" render relief-two-layer --set liquid.ior=-1.3
+    expect_bad_input "relief negative linear steps" "$bin" render relief-mapping --set search.linear_steps=-4
+    expect_bad_input "relief negative binary steps" "$bin" render relief-mapping --set search.binary_steps=-1
+    expect_bad_input "relief steps above the maximum" "$bin" render relief-mapping --set search.linear_steps=513
+    expect_bad_input "relief d0 at 0" "$bin" render relief-absorption --set 'liquid.half_distance=[0.03,0,0.5]'
+    expect_bad_input "relief negative d0" "$bin" render relief-absorption --set 'liquid.half_distance=[-0.03,0.08,0.5]'
+    expect_bad_input "relief no light crossings" "$bin" render relief-occlusion --set liquid.max_crossings=0
+    expect_bad_input "relief zero sun direction" "$bin" render relief-two-layer --set 'environment.sun_direction=[0,0,0]'
     ;;
 
   bench_shape)
