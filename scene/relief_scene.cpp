@@ -67,6 +67,10 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
     stones.seed = uint32_t(surface_r.integer_or("seed", 1, 0, 1 << 30));
     const double depth = surface_r.number_or("depth", 0.08, 0.0, 10.0);  // in texture coordinates
     const double uv_per_unit = surface_r.number_or("uv_per_unit", 1.0, 1e-3, 1e3);
+    // "flat": the stones' colour on a height field of one value, the
+    // degenerate case the failure tests use (1: the top, 0: the floor).
+    const bool flat = surface_r.choice_or("heights", "stones", {"stones", "flat"}) == "flat";
+    const double flat_height = flat ? surface_r.number_or("flat_height", 0.5, 0.0, 1.0) : 0.0;
     surface_r.finish();
 
     // The search (relief and later rows); steps above kMax* are refused
@@ -162,7 +166,10 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
         draw.vertices.data.push_back(glm::vec4(float(c.x * uv_per_unit), float(c.y * uv_per_unit), 0.0f, 1.0f));
     }
     draw.indices = {0, 1, 2, 0, 2, 3};
-    draw.textures.push_back(relief_texture(stone_heights(stones), depth, "relief_map"));
+    const HeightField solid =
+        flat ? HeightField{stones.size, std::vector<double>(size_t(stones.size) * size_t(stones.size), flat_height)}
+             : stone_heights(stones);
+    draw.textures.push_back(relief_texture(solid, depth, "relief_map"));
     draw.textures.push_back(stone_colour_texture(stones, "colour_map"));
     if (two_layer) {
         draw.textures.push_back(relief_texture(drop_heights(drops), liquid_depth, "liquid_map"));

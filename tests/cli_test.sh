@@ -146,6 +146,34 @@ for line in sys.stdin:
     expect_bad_input "relief zero sun direction" "$bin" render relief-two-layer --set 'environment.sun_direction=[0,0,0]'
     ;;
 
+  relief_flat)
+    # Where the search degenerates (issue 10): flat height maps. Both
+    # pipelines agree and nothing non-finite is written at the top (1), the
+    # floor (0) and in between; at the top the secant step lands exactly on
+    # the surface, so relief mapping shows what normal mapping shows (but
+    # where the explicit and implicit LOD formulas round apart), while binary
+    # search alone stops a bracket short and shifts every texel.
+    flat=(--set 'surface.heights="flat"')
+    for h in 1 0 0.5; do
+      "$bin" compare relief-mapping "${flat[@]}" --set surface.flat_height=$h --json --out "$work/f$h" >"$work/f$h.json" ||
+        { cat "$work/f$h.json"; fail "flat height $h: the pipelines disagree"; }
+      grep -q '"nonfinite":0,' "$work/f$h.json" || fail "flat height $h: non-finite pixels"
+    done
+    "$bin" render relief-normal-mapping "${flat[@]}" --set surface.flat_height=1 --backend cpu --out "$work/n" >/dev/null
+    "$bin" render relief-mapping "${flat[@]}" --set surface.flat_height=1 --set search.secant=false --backend cpu \
+      --out "$work/ns" >/dev/null
+    with_secant=$("$bin" diff "$work/f1/relief-mapping.cpu.exr" "$work/n/relief-normal-mapping.cpu.exr" --json || true)
+    without=$("$bin" diff "$work/ns/relief-mapping.cpu.exr" "$work/n/relief-normal-mapping.cpu.exr" --json || true)
+    echo "secant: $with_secant"
+    echo "binary only: $without"
+    python3 - "$with_secant" "$without" <<'PY' || fail "flat top: relief mapping against normal mapping"
+import json, sys
+a, b = json.loads(sys.argv[1]), json.loads(sys.argv[2])
+assert a["identical_fraction_float"] >= 0.9999 and a["max_diff_8bit"] <= 1, a
+assert b["identical_fraction_float"] < 0.01, b
+PY
+    ;;
+
   bench_shape)
     # The output's shape, never its speed.
     "$bin" bench triangles-basic --frames 3 --json >"$work/bench.jsonl"
