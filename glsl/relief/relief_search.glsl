@@ -57,6 +57,21 @@ float trace_segment(sampler2D map, vec2 uv, vec2 offset, float a, float dh, floa
     return secant && hit ? s_secant : s_hi;
 }
 
+// Whether a rising segment (side 1) meets the surface at all: the linear
+// search alone, as a shadow test needs no refined point (Policarpo et al.'s
+// self-shadowing does the same); the same answer as trace_segment's `hit`.
+bool segment_blocked(sampler2D map, vec2 uv, vec2 offset, float a, float dh, vec2 dx, vec2 dy, int linear_steps) {
+    float size = 1.0 / float(linear_steps);
+    float s = 0.0;
+    float h = textureGrad(map, uv, dx, dy).a;
+    for (int i = 0; i < linear_steps; ++i) {
+        s += size;
+        h = textureGrad(map, uv + offset * s, dx, dy).a;
+        if (a + dh * s <= h) break;
+    }
+    return a + dh * s <= h;
+}
+
 // The view ray from the top of the box (height 1) at uv down to its floor
 // (height 0) at uv + offset: the floor stops every such ray, so it always
 // hits; t is the fraction of the depth travelled.

@@ -56,8 +56,7 @@ vec3 light_occlusion(vec2 uv, float z, vec3 l, vec2 dx, vec2 dy) {
     float total = z / max(l.z, 1e-4);  // texture units from the point to the top
     vec2 offset = l.xy * total;
     float a = min(1.0 - z / depth + shadow_bias, 1.0);
-    bool blocked;
-    trace_segment(relief_map, uv, offset, a, 1.0 - a, 1.0, dx, dy, linear_steps, binary_steps, false, blocked);
+    bool blocked = segment_blocked(relief_map, uv, offset, a, 1.0 - a, dx, dy, linear_steps);
     float a_liquid = 1.0 - z / liquid_depth;  // the point's height in the medium's units
     float side = a_liquid < textureGrad(liquid_map, uv, dx, dy).a ? -1.0 : 1.0;  // -1: inside the medium
     float lit = 1.0;

@@ -55,6 +55,25 @@ Float trace_segment(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2
     return glsl::select(Mask(secant) && hit, s_secant, s_hi);
 }
 
+Mask segment_blocked(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, Float a, Float dh,
+                     const Vec2& dx, const Vec2& dy, int linear_steps) {
+    const texel::LevelChoice levels = map.grad_levels(dx, dy);
+    const Float size = Float(1.0f) / Float(float(linear_steps));
+    Float s = 0.0f;
+    Float h = map.sample_grad_alpha(uv, levels);
+    Int i = 0;
+    exec.loop([&](Loop& loop) {
+        loop.break_if(!(i < Int(linear_steps)));
+        const Float s_next = s + size;
+        exec.assign(s, s_next);
+        const Float h_next = map.sample_grad_alpha(uv + offset * s_next, levels);
+        exec.assign(h, h_next);
+        loop.break_if(a + dh * s_next <= h_next);
+        exec.assign(i, i + 1);
+    });
+    return a + dh * s <= h;
+}
+
 Float trace_height_field(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, const Vec2& dx,
                          const Vec2& dy, int linear_steps, int binary_steps, bool secant) {
     Mask hit;

@@ -16,6 +16,9 @@ Float trace_segment(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2
                     Float side, const Vec2& dx, const Vec2& dy, int linear_steps, int binary_steps, bool secant,
                     Mask& hit);
 
+Mask segment_blocked(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, Float a, Float dh,
+                     const Vec2& dx, const Vec2& dy, int linear_steps);
+
 // `exec` is the invocation's execution mask: the linear search is a loop
 // whose lanes leave at different steps.
 Float trace_height_field(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, const Vec2& dx,

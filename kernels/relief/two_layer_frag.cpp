@@ -45,9 +45,8 @@ Vec3 TwoLayerFragment::light_occlusion(Exec& exec, const Vec2& uv, Float z, cons
     const Float total = z / glsl::max(l.z, Float(1e-4f));
     const Vec2 offset = Vec2(l.x, l.y) * total;
     const Float a = glsl::min(Float(1.0f) - z / Float(depth_) + Float(shadow_bias_), Float(1.0f));
-    Mask blocked;
-    relief::trace_segment(exec, *u_.relief_map, uv, offset, a, Float(1.0f) - a, Float(1.0f), dx, dy, linear_steps_,
-                          binary_steps_, false, blocked);
+    const Mask blocked =
+        relief::segment_blocked(exec, *u_.relief_map, uv, offset, a, Float(1.0f) - a, dx, dy, linear_steps_);
     const Float a_liquid = Float(1.0f) - z / Float(liquid_depth_);
     Float side = glsl::select(a_liquid < liquid_map_->sample_grad(uv, dx, dy).w, Float(-1.0f), Float(1.0f));
     Float lit = 1.0f;
