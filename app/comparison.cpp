@@ -1,6 +1,8 @@
 // comparison.cpp: see comparison.h.
 #include "app/comparison.h"
 
+#include <algorithm>
+
 #include "image/image_io.h"
 
 namespace st {
@@ -13,6 +15,23 @@ std::string write_rendered(const std::string& dir, const std::string& scene, Bac
     return stem + ".png";
 }
 
+namespace {
+
+// The frame with every draw's search rays perturbed by `ulps` (the twins of
+// searching programs read ulp_perturbation; GL never sees this frame).
+Frame perturbed(const Frame& frame, int ulps) {
+    Frame f = frame;
+    for (Pass& pass : f.passes)
+        for (DrawCall& d : pass.draws) {
+            Uniform u{"ulp_perturbation", UniformType::Int, {}};
+            u.value[0] = float(ulps);
+            d.uniforms.push_back(u);
+        }
+    return f;
+}
+
+}  // namespace
+
 SceneComparison compare_scene(const Scene& scene, Backends& backends, const std::string& out_dir) {
     SceneComparison c;
     c.scene = scene.name;
@@ -24,7 +43,26 @@ SceneComparison compare_scene(const Scene& scene, Backends& backends, const std:
 
     c.metrics = compare_images(cpu.image, gl.image);
     c.coverage_mismatch = st::coverage_mismatch(cpu_cov, gl_cov);
-    c.failures = scene.criteria.failures(c.metrics, c.coverage_mismatch);
+    const std::vector<uint8_t> over = over_1lsb(cpu.image, gl.image);
+    c.over_1lsb = long(std::count(over.begin(), over.end(), uint8_t(1)));
+    if (scene.criteria.condition_map) {
+        // A pixel is ill-conditioned where a one-ULP change of the ray, either
+        // way, moves the CPU result by more than 1 LSB.
+        const Image plus = backends.render(Backend::Cpu, perturbed(scene.frame, 1)).image;
+        const Image minus = backends.render(Backend::Cpu, perturbed(scene.frame, -1)).image;
+        std::vector<uint8_t> map = over_1lsb(cpu.image, plus);
+        const std::vector<uint8_t> other = over_1lsb(cpu.image, minus);
+        for (size_t p = 0; p < map.size(); ++p) map[p] |= other[p];
+        c.condition_pixels = long(std::count(map.begin(), map.end(), uint8_t(1)));
+        for (size_t p = 0; p < map.size(); ++p) c.explained += over[p] && map[p];
+        c.condition_png = scene.name + ".condition.png";
+        std::vector<uint8_t> grey(map.size());
+        for (size_t p = 0; p < map.size(); ++p) grey[p] = map[p] ? 255 : 0;
+        write_png_bytes(out_dir + "/" + c.condition_png, cpu.image.width, cpu.image.height, 1, grey.data());
+        c.failures = scene.criteria.failures(c.metrics, c.coverage_mismatch, c.over_1lsb, c.explained);
+    } else {
+        c.failures = scene.criteria.failures(c.metrics, c.coverage_mismatch);
+    }
     c.cpu_ms = cpu.ms;
     c.gl_ms = gl.ms;
     c.cpu_hash = pixel_hash(cpu.image);
@@ -78,6 +116,11 @@ nlohmann::json to_json(const SceneComparison& c) {
                         {"pass", c.pass()},
                         {"coverage_mismatch", c.coverage_mismatch}};
     j.update(metrics_json(c.metrics));
+    j["pixels_over_1lsb"] = c.over_1lsb;
+    if (c.condition_pixels >= 0) {
+        j["condition_map_pixels"] = c.condition_pixels;
+        j["explained_by_condition_map"] = c.explained;
+    }
     j["failures"] = c.failures;
     j["cpu_ms"] = c.cpu_ms;
     j["gl_ms"] = c.gl_ms;

@@ -27,11 +27,14 @@ struct SceneComparison {
     std::string scene;
     CompareMetrics metrics;
     long coverage_mismatch = 0;
+    long over_1lsb = 0;             // pixels with a channel more than 1 LSB apart
+    long condition_pixels = -1;     // pixels the condition map marks; -1: no map
+    long explained = 0;             // of over_1lsb, those the map marks
     std::vector<std::string> failures;  // empty = pass
     double cpu_ms = 0, gl_ms = 0;
     std::string cpu_hash, gl_hash;
     // File names relative to the output folder.
-    std::string cpu_png, gl_png, diff_png, coverage_diff_png;
+    std::string cpu_png, gl_png, diff_png, coverage_diff_png, condition_png;
     std::vector<OutputComparison> outputs;  // the scene's criteria apply to each
     bool pass() const {
         for (const auto& o : outputs)

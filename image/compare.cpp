@@ -82,6 +82,19 @@ long coverage_mismatch(const Image& a, const Image& b) {
     return mismatch;
 }
 
+std::vector<uint8_t> over_1lsb(const Image& a, const Image& b) {
+    check_sizes(a, b);
+    const size_t pixels = size_t(a.width) * a.height;
+    std::vector<uint8_t> mask(pixels, 0);
+    for (size_t p = 0; p < pixels; ++p)
+        for (int c = 0; c < 4; ++c) {
+            const float va = a.rgba[p * 4 + c], vb = b.rgba[p * 4 + c];
+            const bool same_bits = std::bit_cast<uint32_t>(va) == std::bit_cast<uint32_t>(vb);
+            if (diff_8bit(va, vb) > 1 || (!same_bits && !(std::isfinite(va) && std::isfinite(vb)))) mask[p] = 1;
+        }
+    return mask;
+}
+
 std::vector<uint8_t> heat_map(const Image& a, const Image& b) {
     check_sizes(a, b);
     const size_t pixels = size_t(a.width) * a.height;

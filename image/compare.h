@@ -27,6 +27,10 @@ CompareMetrics compare_images(const Image& a, const Image& b);
 // Pixels covered (any channel non-zero) in exactly one of two coverage images.
 long coverage_mismatch(const Image& a, const Image& b);
 
+// Per pixel (rows top to bottom), 1 where some channel's unorm8 value
+// differs by more than 1 LSB between a and b (or one is non-finite).
+std::vector<uint8_t> over_1lsb(const Image& a, const Image& b);
+
 // RGB heat map of the per-pixel difference, rows top to bottom:
 // black = bit-identical floats, dark blue = floats differ but 8-bit equal,
 // green = 1 LSB, yellow = 2-3 LSB, red = 4 LSB or more, white = non-finite.

@@ -15,9 +15,30 @@ Criteria Criteria::read(JsonReader& scene) {
     c.min_identical_fraction_8bit = r->number_or("min_identical_fraction_8bit", 0.0, 0.0, 1.0);
     c.min_identical_fraction_float = r->number_or("min_identical_fraction_float", 0.0, 0.0, 1.0);
     c.nonfinite_if_identical = r->choice_or("nonfinite", "none", {"none", "identical"}) == "identical";
+    c.condition_map = r->boolean_or("condition_map", false);
+    c.min_within_1lsb_fraction = r->number_or("min_within_1lsb_fraction", c.min_within_1lsb_fraction, 0.0, 1.0);
     c.rationale = r->string_or("rationale", "");
     r->finish();
     return c;
+}
+
+std::vector<std::string> Criteria::failures(const CompareMetrics& m, long coverage, long over_1lsb,
+                                           long explained) const {
+    std::vector<std::string> out = failures(m, coverage);
+    if (!condition_map) return out;
+    // The 8-bit bound is the map's to decide: drop it, then check the map.
+    std::erase_if(out, [](const std::string& f) { return f.rfind("max_diff_8bit ", 0) == 0; });
+    const double pixels = double(m.width) * double(m.height);
+    const double within = pixels > 0 ? 1.0 - double(over_1lsb) / pixels : 1.0;
+    std::ostringstream s;
+    if (within < min_within_1lsb_fraction) {
+        s << "within_1lsb_fraction " << within << " (limit " << min_within_1lsb_fraction << ")";
+        out.push_back(s.str());
+    }
+    if (explained < over_1lsb)
+        out.push_back("pixels off by more than 1 LSB that the condition map does not explain: " +
+                      std::to_string(over_1lsb - explained));
+    return out;
 }
 
 std::vector<std::string> Criteria::failures(const CompareMetrics& m, long coverage) const {

@@ -23,10 +23,22 @@ struct Criteria {
     // any non-finite channel fails.
     bool nonfinite_if_identical = false;
     std::string rationale;  // why these bounds (free text from the scene file)
+    // Search scenes (issue 10): the CPU pipeline also renders the scene
+    // with each search's ray perturbed by one ULP either way and marks the
+    // pixels whose result then moves by more than 1 LSB (the condition
+    // map). max_diff_8bit then bounds only the pixels the map does not
+    // mark: a pixel off by more than 1 LSB that the map does not explain
+    // fails, and at least min_within_1lsb_fraction of the pixels must be
+    // within 1 LSB.
+    bool condition_map = false;
+    double min_within_1lsb_fraction = 0.995;
 
     static Criteria read(JsonReader& scene);  // from the optional "criteria" object
     // Human-readable reasons the metrics fail; empty when they pass.
     std::vector<std::string> failures(const CompareMetrics& m, long coverage) const;
+    // With the condition map: pixels off by more than 1 LSB, and how many
+    // of them the map marks.
+    std::vector<std::string> failures(const CompareMetrics& m, long coverage, long over_1lsb, long explained) const;
 };
 
 }  // namespace st

@@ -27,6 +27,13 @@ int Bindings::get_int(const std::string& name) const {
     return int(find(uniforms, name, UniformType::Int).value[0]);
 }
 
+int Bindings::get_int_or(const std::string& name, int fallback) const {
+    if (uniforms)
+        for (const Uniform& u : *uniforms)
+            if (u.name == name && u.type == UniformType::Int) return int(u.value[0]);
+    return fallback;
+}
+
 glm::vec2 Bindings::get_vec2(const std::string& name) const {
     const auto& v = find(uniforms, name, UniformType::Vec2).value;
     return glm::vec2(v[0], v[1]);

@@ -49,6 +49,8 @@ struct Bindings {
     // another type, so a scene that forgets one fails loudly.
     float get_float(const std::string& name) const;
     int get_int(const std::string& name) const;
+    // An int the scene may leave out (the condition map's perturbation).
+    int get_int_or(const std::string& name, int fallback) const;
     glm::vec2 get_vec2(const std::string& name) const;
     glm::vec3 get_vec3(const std::string& name) const;
     glm::vec4 get_vec4(const std::string& name) const;

@@ -166,6 +166,21 @@ for line in sys.stdin:
     without=$("$bin" diff "$work/ns/relief-mapping.cpu.exr" "$work/n/relief-normal-mapping.cpu.exr" --json || true)
     echo "secant: $with_secant"
     echo "binary only: $without"
+    # The condition map: compare reports its counts for search scenes only.
+    "$bin" compare relief-two-layer relief-normal-mapping --json --out "$work/cm" >"$work/cm.json" ||
+      { cat "$work/cm.json"; fail "condition-map scenes fail"; }
+    cat "$work/cm.json"
+    python3 - "$work/cm.json" <<'PY' || fail "condition map counts"
+import json, sys
+rows = {j["scene"]: j for j in map(json.loads, open(sys.argv[1]))}
+t, n = rows["relief-two-layer"], rows["relief-normal-mapping"]
+for key in ("pixels_over_1lsb", "condition_map_pixels", "explained_by_condition_map"):
+    assert key in t, key
+assert t["explained_by_condition_map"] <= t["pixels_over_1lsb"]
+assert t["condition_map_pixels"] > 0  # a one-ULP nudge moves some search hits
+assert "condition_map_pixels" not in n and n["pixels_over_1lsb"] == 0
+PY
+    [ -f "$work/cm/relief-two-layer.condition.png" ] || fail "no condition map image"
     python3 - "$with_secant" "$without" <<'PY' || fail "flat top: relief mapping against normal mapping"
 import json, sys
 a, b = json.loads(sys.argv[1]), json.loads(sys.argv[2])

@@ -52,6 +52,7 @@ private:
     float depth_ = 0.0f, world_depth_ = 0.0f;
     int linear_steps_ = 1, binary_steps_ = 0;
     bool secant_ = false;
+    int ulp_perturbation_ = 0;  // the condition map's, CPU only (relief_search.h)
 };
 
 class TwoLayerFragment final : public FragmentProgram<TwoLayerFragment> {  // two_layer.frag
@@ -76,6 +77,7 @@ private:
     int max_crossings_ = 0;
     float shadow_bias_ = 0.0f;
     glm::vec3 half_distance_{1.0f};
+    int ulp_perturbation_ = 0;  // the condition map's, CPU only (relief_search.h)
 };
 
 }  // namespace st

@@ -21,6 +21,7 @@ void ReliefMappingFragment::bind(const Bindings& b) {
     linear_steps_ = b.get_int("linear_steps");
     binary_steps_ = b.get_int("binary_steps");
     secant_ = b.get_int("secant") != 0;
+    ulp_perturbation_ = b.get_int_or("ulp_perturbation", 0);
 }
 
 uint32_t ReliefMappingFragment::inputs_read() const { return reads(v_position, "xyz") | reads(v_uv, "xy"); }
@@ -28,7 +29,7 @@ uint32_t ReliefMappingFragment::inputs_read() const { return reads(v_position, "
 Vec4 ReliefMappingFragment::main(const Fragment& frag) const {
     const Vec2 uv = frag.varying(v_uv).xy();
     const Vec3 p = frag.varying(v_position).xyz();
-    const Vec3 v = glsl::normalize(Vec3(u_.eye) - p);
+    const Vec3 v = relief::perturbed(glsl::normalize(Vec3(u_.eye) - p), ulp_perturbation_);
     const Vec2 dx = dFdx(uv);
     const Vec2 dy = dFdy(uv);
     const Vec2 offset = Vec2(-v.x, -v.y) * (Float(depth_) / v.z);

@@ -25,6 +25,7 @@ void TwoLayerFragment::bind(const Bindings& b) {
     linear_steps_ = b.get_int("linear_steps");
     binary_steps_ = b.get_int("binary_steps");
     secant_ = b.get_int("secant") != 0;
+    ulp_perturbation_ = b.get_int_or("ulp_perturbation", 0);
     occlusion_ = b.get_int("occlusion") != 0;
     absorption_ = b.get_int("absorption") != 0;
     max_crossings_ = b.get_int("max_crossings");
@@ -95,7 +96,7 @@ Vec4 TwoLayerFragment::main(const Fragment& frag) const {
     Exec& exec = frag.exec();
     const Vec2 uv = frag.varying(v_uv).xy();
     const Vec3 p = frag.varying(v_position).xyz();
-    const Vec3 v = glsl::normalize(Vec3(u_.eye) - p);
+    const Vec3 v = relief::perturbed(glsl::normalize(Vec3(u_.eye) - p), ulp_perturbation_);
     const Vec2 dx = dFdx(uv);
     const Vec2 dy = dFdy(uv);
     const Vec2 minus_v_xy(-v.x, -v.y);
