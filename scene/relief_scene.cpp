@@ -132,6 +132,9 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
     JsonReader shading_r = scene.object("shading");
     const float ambient = float(shading_r.number_or("ambient", 0.15, 0.0, 10.0));
     const float specular = float(shading_r.number_or("specular", 0.35, 0.0, 100.0));
+    // The medium's highlight (rows 3-5 and later): off unless asked for.
+    const float liquid_specular = two_layer ? float(shading_r.number_or("liquid_specular", 0.0, 0.0, 1000.0)) : 0.0f;
+    const bool intensify = two_layer && shading_r.boolean_or("intensify", false);
     shading_r.finish();
 
     View v;
@@ -192,6 +195,8 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
             draw.uniforms.push_back(int_uniform("max_crossings", max_crossings));
             draw.uniforms.push_back(uniform("shadow_bias", float(shadow_bias)));
             draw.uniforms.push_back(uniform("half_distance", half_distance));
+            draw.uniforms.push_back(uniform("liquid_specular", liquid_specular));
+            draw.uniforms.push_back(int_uniform("intensify", intensify ? 1 : 0));
         } else {
             draw.uniforms.push_back(uniform("world_depth", float(depth / uv_per_unit)));
         }

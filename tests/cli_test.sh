@@ -189,6 +189,20 @@ assert b["identical_fraction_float"] < 0.01, b
 PY
     ;;
 
+  relief_phong)
+    # Phong-specular intensification brightens the medium's highlight; the
+    # highlight without it is dimmer; row 3 has none.
+    "$bin" render relief-phong --backend cpu --out "$work/on" >/dev/null
+    "$bin" render relief-phong --backend cpu --set shading.intensify=false --out "$work/off" >/dev/null
+    "$bin" render relief-two-layer --backend cpu --out "$work/none" >/dev/null
+    avg() { oiiotool -v --info --stats "$1" | sed -n 's/.*Stats Avg: \([0-9.]*\).*/\1/p' | head -1; }
+    on=$(avg "$work/on/relief-phong.cpu.exr"); off=$(avg "$work/off/relief-phong.cpu.exr")
+    none=$(avg "$work/none/relief-two-layer.cpu.exr")
+    echo "mean red: intensified $on, not $off, no highlight $none"
+    python3 -c "import sys; a, b, c = map(float, sys.argv[1:]); sys.exit(0 if a > b > c else 1)" "$on" "$off" "$none" ||
+      fail "intensification does not order the highlights"
+    ;;
+
   bench_shape)
     # The output's shape, never its speed.
     "$bin" bench triangles-basic --frames 3 --json >"$work/bench.jsonl"

@@ -6,8 +6,8 @@
 // `light` is the light that reaches the point (Algorithm 2's coefficient,
 // per channel); blinn_phong() is the fully lit case (multiplying by 1
 // changes no bit).
-vec3 lit_blinn_phong(vec3 albedo, vec3 n, vec3 l, vec3 v, float ambient, float specular, vec3 light) {
-    float diffuse = max(dot(n, l), 0.0);
+// The highlight's shape: max(dot(n, h), 0)^32, h halfway between l and v.
+float highlight32(vec3 n, vec3 l, vec3 v) {
     vec3 h = normalize(l + v);
     float s = max(dot(n, h), 0.0);
     s = s * s;
@@ -15,6 +15,12 @@ vec3 lit_blinn_phong(vec3 albedo, vec3 n, vec3 l, vec3 v, float ambient, float s
     s = s * s;
     s = s * s;
     s = s * s;
+    return s;
+}
+
+vec3 lit_blinn_phong(vec3 albedo, vec3 n, vec3 l, vec3 v, float ambient, float specular, vec3 light) {
+    float diffuse = max(dot(n, l), 0.0);
+    float s = highlight32(n, l, v);
     return albedo * (ambient + diffuse * light) + vec3(specular * s) * light;
 }
 

@@ -2,7 +2,8 @@
 // two_layer.frag: Table 1's rows 3 to 5, switched on cumulatively as the
 // paper measures them: two-layer translucency (Timonen Algorithm 1), light
 // occlusion (Algorithm 2, `occlusion`) and hued absorption (Eq. 1,
-// `absorption`). Two relief layers with their own boxes below the polygon:
+// `absorption`); and the light's highlight on the medium with Phong-specular
+// intensification (Sec. 3.2), which the rows leave off. Two relief layers with their own boxes below the polygon:
 // the solid one (stones, relief_map) and the surface of the translucent
 // medium (liquid_map). The view ray meets the nearer of the two; on the
 // solid layer the fragment is shaded as in relief mapping; on the medium the
@@ -36,6 +37,8 @@ uniform bool absorption;     // row 5: the medium absorbs per channel
 uniform int max_crossings;   // medium boundaries a light ray is followed through
 uniform float shadow_bias;   // solid-layer heights the light ray starts above its point
 uniform vec3 half_distance;  // Eq. 1's d0 per channel, world units
+uniform float liquid_specular;  // the light's highlight on the medium (0 in Table 1's rows)
+uniform bool intensify;         // Phong-specular intensification (Sec. 3.2)
 
 // Eq. 1, I = 1 - (1/2)^(d/d0), read as the part of the light the medium
 // absorbs over a distance d: the part that survives is (1/2)^(d/d0), so d0
@@ -151,6 +154,12 @@ void main() {
         vec3 local = shade_solid(at_uv + up_offset * s_up, at + reflected * (s_up * up * world_per_uv),
                                  z_liquid - z_liquid * s_up, -reflected, dx, dy);
         vec3 reflection = hit ? local : textureLod(environment, reflected, 0.0).rgb;
+        // The light's own reflection on the medium: weighted by r with the
+        // rest of the reflection it keeps only a few per cent of its peak;
+        // intensification divides that weight out again (Sec. 3.2).
+        float highlight = liquid_specular * highlight32(n, normalize(light - at), v);
+        float gain = intensify ? 1.0 / max(r, 1e-3) : 1.0;
+        reflection = reflection + vec3(highlight * gain);
         colour = (1.0 - r) * refraction + r * reflection;
     }
     frag_colour = vec4(colour, 1.0);

@@ -77,6 +77,8 @@ private:
     int max_crossings_ = 0;
     float shadow_bias_ = 0.0f;
     glm::vec3 half_distance_{1.0f};
+    float liquid_specular_ = 0.0f;
+    bool intensify_ = false;
     int ulp_perturbation_ = 0;  // the condition map's, CPU only (relief_search.h)
 };
 

@@ -6,9 +6,7 @@
 
 namespace st::relief {
 
-Vec3 lit_blinn_phong(const Vec3& albedo, const Vec3& n, const Vec3& l, const Vec3& v, Float ambient, Float specular,
-                     const Vec3& light) {
-    const Float diffuse = glsl::max(glsl::dot(n, l), Float(0.0f));
+Float highlight32(const Vec3& n, const Vec3& l, const Vec3& v) {
     const Vec3 h = glsl::normalize(l + v);
     Float s = glsl::max(glsl::dot(n, h), Float(0.0f));
     s = s * s;
@@ -16,6 +14,13 @@ Vec3 lit_blinn_phong(const Vec3& albedo, const Vec3& n, const Vec3& l, const Vec
     s = s * s;
     s = s * s;
     s = s * s;
+    return s;
+}
+
+Vec3 lit_blinn_phong(const Vec3& albedo, const Vec3& n, const Vec3& l, const Vec3& v, Float ambient, Float specular,
+                     const Vec3& light) {
+    const Float diffuse = glsl::max(glsl::dot(n, l), Float(0.0f));
+    const Float s = highlight32(n, l, v);
     return albedo * (Vec3(ambient) + Vec3(diffuse) * light) + Vec3(specular * s) * light;
 }
 

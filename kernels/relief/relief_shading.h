@@ -6,6 +6,7 @@
 
 namespace st::relief {
 
+Float highlight32(const Vec3& n, const Vec3& l, const Vec3& v);
 Vec3 lit_blinn_phong(const Vec3& albedo, const Vec3& n, const Vec3& l, const Vec3& v, Float ambient, Float specular,
                      const Vec3& light);
 Vec3 blinn_phong(const Vec3& albedo, const Vec3& n, const Vec3& l, const Vec3& v, Float ambient, Float specular);

@@ -31,6 +31,8 @@ void TwoLayerFragment::bind(const Bindings& b) {
     max_crossings_ = b.get_int("max_crossings");
     shadow_bias_ = b.get_float("shadow_bias");
     half_distance_ = b.get_vec3("half_distance");
+    liquid_specular_ = b.get_float("liquid_specular");
+    intensify_ = b.get_int("intensify") != 0;
 }
 
 uint32_t TwoLayerFragment::inputs_read() const { return reads(v_position, "xyz") | reads(v_uv, "xy"); }
@@ -145,7 +147,11 @@ Vec4 TwoLayerFragment::main(const Fragment& frag) const {
             const Vec3 local = shade_solid(exec, at_uv + up_offset * s_up,
                                            at + reflected * (s_up * up * Float(world_per_uv_)), z_liquid - z_liquid * s_up,
                                            Vec3(-reflected.x, -reflected.y, -reflected.z), dx, dy);
-            const Vec3 reflection = glsl::select(hit, local, environment_->sample_lod(reflected, Float(0.0f)).xyz());
+            Vec3 reflection = glsl::select(hit, local, environment_->sample_lod(reflected, Float(0.0f)).xyz());
+            const Float highlight =
+                Float(liquid_specular_) * relief::highlight32(n, glsl::normalize(Vec3(u_.light) - at), v);
+            const Float gain = intensify_ ? Float(1.0f) / glsl::max(r, Float(1e-3f)) : Float(1.0f);
+            reflection = reflection + Vec3(highlight * gain);
             exec.assign(colour, (Float(1.0f) - r) * refraction + r * reflection);
         });
     return Vec4(colour, Float(1.0f));
