@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/input_error.h"
@@ -28,16 +29,28 @@ struct View {
 };
 
 // The four points where the frustum's corner rays, widened by 5 %, meet the
-// plane z = 0, counter-clockwise as seen from above.
-std::array<glm::dvec3, 4> visible_quad(const View& v) {
+// plane z = 0, counter-clockwise as seen from above. With a horizon
+// distance, a corner ray that does not meet the plane within it (a grazing
+// view) is replaced by the point of the plane that far from the camera in
+// its direction: the surface then ends there and the clear colour shows
+// above it.
+std::array<glm::dvec3, 4> visible_quad(const View& v, double horizon) {
     std::array<glm::dvec3, 4> corners;
     const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
     for (int k = 0; k < 4; ++k) {
         const glm::dvec3 d = v.forward + (sx[k] * 1.05 * v.tan_half_x) * v.right + (sy[k] * 1.05 * v.tan_half_y) * v.up;
-        if (!(d.z < -1e-3 * glm::length(d)))
+        const bool meets = d.z < -1e-3 * glm::length(d);
+        const glm::dvec3 hit = meets ? v.eye + d * (-v.eye.z / d.z) : glm::dvec3(0.0);
+        const double reach = glm::length(glm::dvec2(hit - v.eye));
+        if (horizon > 0.0 && (!meets || reach > horizon)) {
+            const glm::dvec2 across = glm::normalize(glm::dvec2(d.x, d.y));
+            corners[size_t(k)] = glm::dvec3(glm::dvec2(v.eye) + across * horizon, 0.0);
+            continue;
+        }
+        if (!meets)
             throw InputError("field 'view.angle_deg': the view reaches the horizon, so the surface cannot cover the "
-                             "screen (at most 90 - fov/2 - a margin)");
-        corners[size_t(k)] = v.eye + d * (-v.eye.z / d.z);
+                             "screen (at most 90 - fov/2 - a margin, or give view.horizon_distance)");
+        corners[size_t(k)] = hit;
     }
     return corners;
 }
@@ -54,6 +67,8 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
     const double phi = view_r.number_or("azimuth_deg", 0.0, -360.0, 360.0) * kPi / 180.0;
     const double distance = view_r.number_or("distance", 2.0, 1e-3, 1e3);
     const double fov = view_r.number_or("fov_deg", 45.0, 1.0, 120.0) * kPi / 180.0;
+    // 0: the surface must cover the screen (Table 1's measurements).
+    const double horizon = view_r.number_or("horizon_distance", 0.0, 0.0, 1e4);
     view_r.finish();
 
     JsonReader light_r = scene.object("light");
@@ -147,7 +162,7 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
     v.up = glm::cross(v.right, v.forward);
     v.tan_half_y = std::tan(0.5 * fov);
     v.tan_half_x = v.tan_half_y * double(size.width) / double(size.height);
-    const std::array<glm::dvec3, 4> quad = visible_quad(v);
+    const std::array<glm::dvec3, 4> quad = visible_quad(v, horizon);
 
     // Near and far bracket the quad's depths along the view direction.
     double nearest = 1e30, farthest = 0;

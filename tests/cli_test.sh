@@ -166,6 +166,18 @@ for line in sys.stdin:
     without=$("$bin" diff "$work/ns/relief-mapping.cpu.exr" "$work/n/relief-normal-mapping.cpu.exr" --json || true)
     echo "secant: $with_secant"
     echo "binary only: $without"
+    # A grazing view (86 degrees from the normal, the surface ending at a
+    # horizon): the pipelines agree, nothing non-finite, and 16 linear steps
+    # stair-step where 128 do not (the image moves by many LSB).
+    graze=(--set view.angle_deg=86 --set view.horizon_distance=20)
+    "$bin" compare relief-mapping "${graze[@]}" --json --out "$work/g16" >"$work/g16.json" ||
+      { cat "$work/g16.json"; fail "grazing view: the pipelines disagree"; }
+    grep -q '"nonfinite":0,' "$work/g16.json" || fail "grazing view: non-finite pixels"
+    "$bin" render relief-mapping "${graze[@]}" --set search.linear_steps=128 --backend cpu --out "$work/g128" >/dev/null
+    steps=$("$bin" diff "$work/g16/relief-mapping.cpu.exr" "$work/g128/relief-mapping.cpu.exr" --json || true)
+    echo "grazing, 16 against 128 steps: $steps"
+    python3 -c "import json,sys; j = json.loads(sys.argv[1]); sys.exit(0 if j['max_diff_8bit'] >= 32 else 1)" "$steps" ||
+      fail "grazing view: no stair-stepping at 16 steps"
     # The condition map: compare reports its counts for search scenes only.
     "$bin" compare relief-two-layer relief-normal-mapping --json --out "$work/cm" >"$work/cm.json" ||
       { cat "$work/cm.json"; fail "condition-map scenes fail"; }
