@@ -136,6 +136,9 @@ Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
         for (int l = 0; l <= last_level_; ++l)
             std::memcpy(&rgba8_[size_t(level_base_[size_t(l)])], level_bytes(l),
                         size_t(level_width_[size_t(l)]) * size_t(level_height_[size_t(l)]) * 4);
+        if (aos_ && needs_lod() && texture.min_filter == TextureFilter::Linear &&
+            texture.mag_filter == TextureFilter::Linear)
+            build_alpha_quads();
     } else {
         rgba32_.assign(texels * 4, 0.0f);
         for (int l = 0; l <= last_level_; ++l) {
@@ -143,6 +146,33 @@ Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
             float* out = &rgba32_[size_t(level_base_[size_t(l)]) * 4];
             const size_t n = size_t(level_width_[size_t(l)]) * size_t(level_height_[size_t(l)]);
             for (size_t i = 0; i < n; ++i) stored_texel(texture.format, in + 4 * i, out + 4 * i);
+        }
+    }
+}
+
+// The right (or lower) neighbour of texel i on an axis of n texels, as
+// linear_taps_fixed pairs the taps: wrapped for REPEAT, clamped for
+// CLAMP_TO_EDGE.
+static int neighbour(int i, int n, TextureWrap wrap) {
+    if (wrap == TextureWrap::Repeat) return i + 1 == n ? 0 : i + 1;
+    return std::min(i + 1, n - 1);
+}
+
+void Sampler2D::build_alpha_quads() {
+    alpha_quads_.assign(rgba8_.size(), 0);
+    auto alpha = [&](size_t i) { return uint32_t(rgba8_[i]) >> 24; };
+    for (int l = 0; l <= last_level_; ++l) {
+        const int w = level_width_[size_t(l)], h = level_height_[size_t(l)];
+        const size_t base = size_t(level_base_[size_t(l)]);
+        for (int y = 0; y < h; ++y) {
+            const size_t row0 = base + size_t(y) * size_t(w);
+            const size_t row1 = base + size_t(neighbour(y, h, tex_->wrap_t)) * size_t(w);
+            for (int x = 0; x < w; ++x) {
+                const size_t x1 = size_t(neighbour(x, w, tex_->wrap_s));
+                const uint32_t q = alpha(row0 + size_t(x)) | alpha(row0 + x1) << 8 | alpha(row1 + size_t(x)) << 16 |
+                                   alpha(row1 + x1) << 24;
+                alpha_quads_[row0 + size_t(x)] = int32_t(q);
+            }
         }
     }
 }
@@ -408,18 +438,42 @@ Vec4 Sampler2D::sample_grad(const Vec2& st, const texel::LevelChoice& levels) co
     return sample_levels(st, levels, false);
 }
 
-Float Sampler2D::sample_grad_alpha(const Vec2& st, const texel::LevelChoice& c) const {
-    if (!needs_lod() || !aos_ || tex_->min_filter != tex_->mag_filter) return sample_grad(st, c).w;
-    // filter_levels' 8-bit branch with the green/alpha pair only.
-    Int rb0, ga0;
-    filter_unorm8<false>(st, level_lanes(c.level0), tex_->min_filter, false, rb0, ga0);
-    if (c.two_levels) {
-        Int rb1, ga1;
-        filter_unorm8<false>(st, level_lanes(c.level1), tex_->min_filter, false, rb1, ga1);
-        const Int wl = itrunc(c.fpart * Float(256.0f));
-        ga0 = lerp8_pairs(wl | (wl << 16), ga0, ga1);
+// filter_unorm8's bilinear alpha from the footprint quads: the same taps
+// and the same 8-bit lerps (each 16-bit half of lerp8_pairs is on its own),
+// with the two rows' horizontal lerps in one call. A CLAMP_TO_EDGE tap pair
+// left of the edge (both taps texel 0) is no quad; those lanes assemble
+// theirs from the texels.
+ST_INLINE Int Sampler2D::alpha_bilinear(const Vec2& st, const LevelLanes& level) const {
+    const LinearTaps8 u = linear_taps_fixed(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s);
+    const LinearTaps8 v = linear_taps_fixed(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t);
+    const Int row0 = level.base + v.i0 * level.width;
+    Int q = simd::gather(alpha_quads_.data(), row0 + u.i0, Mask(true));
+    Mask loose(false);
+    if (tex_->wrap_s == TextureWrap::ClampToEdge) loose = loose || (u.i1 == u.i0 && u.i0 != level.width - Int(1));
+    if (tex_->wrap_t == TextureWrap::ClampToEdge) loose = loose || (v.i1 == v.i0 && v.i0 != level.height - Int(1));
+    if (any(loose)) {
+        const Int row1 = level.base + v.i1 * level.width;
+        auto a = [&](Int index) __attribute__((always_inline)) {
+            return (simd::gather(rgba8_.data(), index, loose) >> 24) & Int(0xff);
+        };
+        const Int own = a(row0 + u.i0) | a(row0 + u.i1) << 8 | a(row1 + u.i0) << 16 | a(row1 + u.i1) << 24;
+        q = select(loose, own, q);
     }
-    return unorm8_to_float(ga0 >> 16);
+    // [a00 | a01 << 16] against [a10 | a11 << 16]: the lower row in the low
+    // half, the upper in the high one.
+    const Int rows = lerp8_pairs(u.weight | (u.weight << 16), q & Int(0x00ff00ff), (q >> 8) & Int(0x00ff00ff));
+    return lerp8_pairs(v.weight, rows & Int(0xff), (rows >> 16) & Int(0xff));
+}
+
+Float Sampler2D::sample_grad_alpha(const Vec2& st, const texel::LevelChoice& c) const {
+    // Only mip-mapped bilinear RGBA8 has quads (the constructor decides).
+    if (alpha_quads_.empty()) return sample_grad(st, c).w;
+    Int a = alpha_bilinear(st, level_lanes(c.level0));
+    if (c.two_levels) {
+        const Int wl = itrunc(c.fpart * Float(256.0f));
+        a = lerp8_pairs(wl, a, alpha_bilinear(st, level_lanes(c.level1)));
+    }
+    return unorm8_to_float(a);
 }
 
 Vec4 Sampler2D::sample_grad(const Vec2& st, const Vec2& dx, const Vec2& dy) const {

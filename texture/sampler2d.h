@@ -83,6 +83,8 @@ private:
     void filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, Int& rb,
                        Int& ga) const;
     Vec4 texel(const LevelLanes& level, Int x, Int y) const;
+    void build_alpha_quads();
+    Int alpha_bilinear(const Vec2& st, const LevelLanes& level) const;
 
     const Texture* tex_;
     int last_level_ = 0;
@@ -99,6 +101,12 @@ private:
     // low byte), and kLanes more, so that a texel and its right neighbour
     // are always one 8-byte load and a row of kLanes texels one load.
     std::vector<int32_t> rgba8_;
+    // For height reads (sample_grad_alpha) of a mip-mapped bilinear RGBA8
+    // texture: at each texel of each level, the alpha bytes of its 2x2
+    // footprint (the texel, its right, lower and lower-right neighbours
+    // under the texture's wraps), so that one 4-byte gather fetches all
+    // four taps. Empty for other textures.
+    std::vector<int32_t> alpha_quads_;
     // The float formats' texels as stored (texture/texel_formats.h), RGBA.
     std::vector<float> rgba32_;
 };

@@ -161,11 +161,20 @@ namespace {
 // The hoisted forms a search uses give sample_grad's bits: levels chosen
 // once for the derivatives, and the alpha-only read.
 TEST(SampleGrad, HoistedLevelsAndAlphaOnlyAreTheSameBits) {
+    // RGBA8 bilinear with mips reads footprint quads: every wrap they are
+    // built for, power-of-two or not, including the edge where a
+    // CLAMP_TO_EDGE pair is no quad.
+    struct Case {
+        TextureWrap wrap;
+        int w, h;
+    };
+    for (const Case& k : {Case{TextureWrap::Repeat, 64, 64}, Case{TextureWrap::Repeat, 48, 20},
+                          Case{TextureWrap::ClampToEdge, 64, 64}, Case{TextureWrap::ClampToEdge, 37, 64}})
     for (TextureFormat format : {TextureFormat::RGBA8, TextureFormat::RGBA32F}) {
         for (TextureFilter filter : {TextureFilter::Linear, TextureFilter::Nearest}) {
-            Texture t = ramp(format, filter, TextureWrap::Repeat, 64, 64);
+            Texture t = ramp(format, filter, k.wrap, k.w, k.h);
             t.mip_filter = MipFilter::Linear;
-            generate_box_mips(t, full_chain_levels(64, 64));
+            generate_box_mips(t, full_chain_levels(k.w, k.h));
             const Sampler2D s(t);
             std::mt19937 rng(7);
             std::uniform_real_distribution<float> coord(-2.0f, 3.0f), grad(-0.2f, 0.2f);
