@@ -118,9 +118,14 @@ int main(int argc, char** argv) {
     figures->add_option("--threads", figure_threads, "Monte Carlo threads")->check(CLI::Range(1, 256));
 
     std::string technique;
-    auto* sweep = app.add_subcommand("sweep", "a technique's model along sweeps of its inputs, on both backends");
-    sweep->add_option("technique", technique, "thin-slab")->required()->check(CLI::IsMember({"thin-slab"}));
+    int sweep_frames = 5;
+    auto* sweep = app.add_subcommand("sweep", "a technique's model along sweeps of its inputs (thin-slab: both "
+                                              "backends; relief: search settings, speed against accuracy, CPU)");
+    sweep->add_option("technique", technique, "thin-slab | relief")
+        ->required()
+        ->check(CLI::IsMember({"thin-slab", "relief"}));
     sweep->add_option("--out", out_dir, "output folder (CSV, SVG charts, Markdown)");
+    sweep->add_option("--frames", sweep_frames, "relief: timed rounds per setting (medians)")->check(CLI::Range(1, 1000));
     add_common(sweep, common);
 
     int report_frames = 10;
@@ -159,7 +164,8 @@ int main(int argc, char** argv) {
         }
         if (*figures) return st::cmd_optics_figures(out_dir, figure_photons, figure_threads);
         if (*bench) return st::cmd_bench(scenes, frames, json, scaling, common);
-        if (*sweep) return st::cmd_sweep(technique, out_dir, common);
+        if (*sweep) return technique == "relief" ? st::cmd_sweep_relief(out_dir, sweep_frames, common)
+                                             : st::cmd_sweep(technique, out_dir, common);
         std::cerr << "shadertwin: no command given (try --help)\n";
         return 2;
     } catch (const std::exception& e) {

@@ -93,6 +93,18 @@ std::string Chart::svg(int width, int height) const {
       << "</text>\n";
     int legend = 0;
     for (const auto& s : series) {
+        if (s.dot_radius > 0) {
+            for (size_t i = 0; i < s.x.size(); ++i) {
+                if (!usable_x(s.x[i]) || !usable_y(s.y[i]) || s.x[i] < x0 || s.x[i] > x1) continue;
+                o << "<circle cx=\"" << fx(s.x[i]) << "\" cy=\"" << std::clamp(fy(s.y[i]), top, top + ph) << "\" r=\""
+                  << s.dot_radius << "\" fill=\"" << s.colour << "\"/>\n";
+            }
+            const double ly = top + 10 + 16 * legend++;
+            o << "<circle cx=\"" << left + pw + 20 << "\" cy=\"" << ly << "\" r=\"" << s.dot_radius << "\" fill=\""
+              << s.colour << "\"/><text x=\"" << left + pw + 34 << "\" y=\"" << ly + 4 << "\">" << esc(s.name)
+              << "</text>\n";
+            continue;
+        }
         o << "<path fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"1.5\""
           << (s.dashed ? " stroke-dasharray=\"5,3\"" : "") << " d=\"";
         bool pen = false;

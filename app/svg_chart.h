@@ -13,6 +13,8 @@ struct ChartSeries {
     std::string colour;  // CSS colour
     std::vector<double> x, y;
     bool dashed = false;
+    // A scatter: a dot of this radius at each point, no line (0: a line).
+    double dot_radius = 0;
 };
 
 struct Chart {

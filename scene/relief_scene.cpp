@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/input_error.h"
+#include "image/image_io.h"
 #include "scene/relief_maps.h"
 #include "scene/scene_kinds.h"
 #include "scene/uniform_values.h"
@@ -55,6 +56,31 @@ std::array<glm::dvec3, 4> visible_quad(const View& v, double horizon) {
     return corners;
 }
 
+// A height map read from an image: its red channel, one height per texel
+// (row 0 of the image is the top, texture row 0 the bottom, as GL uploads
+// a picture). Refuses what the relief maps cannot hold, naming the field.
+HeightField height_map_file(const std::string& path) {
+    Image image;
+    try {
+        image = read_image(path);
+    } catch (const std::exception& e) {
+        throw InputError("field 'surface.height_map': " + std::string(e.what()));
+    }
+    if (image.width != image.height || image.width < 4 || image.width > 4096)
+        throw InputError("field 'surface.height_map': " + path + " is " + std::to_string(image.width) + "x" +
+                         std::to_string(image.height) + "; a height map is square, 4 to 4096 texels a side");
+    HeightField f{image.width, std::vector<double>(size_t(image.width) * size_t(image.width))};
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const float h = image.pixel(x, image.height - 1 - y)[0];
+            if (!(h >= 0.0f && h <= 1.0f))
+                throw InputError("field 'surface.height_map': " + path + " has a height outside [0, 1] at texel (" +
+                                 std::to_string(x) + ", " + std::to_string(image.height - 1 - y) + ")");
+            f.h[size_t(y) * size_t(f.size) + size_t(x)] = h;
+        }
+    return f;
+}
+
 }  // namespace
 
 Frame build_relief_scene(JsonReader& scene, SceneSize size) {
@@ -77,25 +103,46 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
 
     JsonReader surface_r = scene.object("surface");
     StoneParams stones;
-    stones.size = surface_r.integer_or("map_size", 256, 4, 4096);
+    // "flat": the stones' colour on a height field of one value, the
+    // degenerate case the failure tests use (1: the top, 0: the floor).
+    // "walls": walls of height 1 and one texel wide every `wall_spacing`
+    // texels in both directions on a floor at 0, the features thinner than
+    // a linear step that the failure tests need.
+    // "file": the heights from an image (its red channel, in [0, 1]; a path
+    // relative to the working directory), square, with the stones' colours;
+    // its size is the map size.
+    const std::string heights = surface_r.choice_or("heights", "stones", {"stones", "flat", "walls", "file"});
+    HeightField from_file;
+    if (heights == "file") {
+        from_file = height_map_file(surface_r.string("height_map"));
+        stones.size = from_file.size;
+        // A scene may keep its map_size (the built-in ones do) if it agrees.
+        if (surface_r.has("map_size") && surface_r.integer("map_size", 4, 4096) != stones.size)
+            throw InputError("field 'surface.map_size' is not the height map's size (" + std::to_string(stones.size) +
+                             ")");
+    } else {
+        stones.size = surface_r.integer_or("map_size", 256, 4, 4096);
+    }
     stones.cells = surface_r.integer_or("stones", 5, 1, 64);
     stones.seed = uint32_t(surface_r.integer_or("seed", 1, 0, 1 << 30));
     const double depth = surface_r.number_or("depth", 0.08, 0.0, 10.0);  // in texture coordinates
     const double uv_per_unit = surface_r.number_or("uv_per_unit", 1.0, 1e-3, 1e3);
-    // "flat": the stones' colour on a height field of one value, the
-    // degenerate case the failure tests use (1: the top, 0: the floor).
-    const bool flat = surface_r.choice_or("heights", "stones", {"stones", "flat"}) == "flat";
+    const bool flat = heights == "flat";
     const double flat_height = flat ? surface_r.number_or("flat_height", 0.5, 0.0, 1.0) : 0.0;
+    const int wall_spacing = heights == "walls" ? surface_r.integer_or("wall_spacing", 16, 2, stones.size) : 0;
     surface_r.finish();
 
     // The search (relief and later rows); steps above kMax* are refused
     // rather than run for seconds.
-    int linear_steps = 16, binary_steps = 6;
+    int linear_steps = 16, binary_steps = 6, min_linear_steps = 0;
     bool secant = true;
     if (auto search = scene.object_if("search")) {
         linear_steps = search->integer_or("linear_steps", linear_steps, 1, kMaxLinearSteps);
         binary_steps = search->integer_or("binary_steps", binary_steps, 0, kMaxBinarySteps);
         secant = search->boolean_or("secant", secant);
+        // Row 2 only: the count scaled by the view angle (relief_mapping.frag).
+        if (technique == "relief")
+            min_linear_steps = search->integer_or("min_linear_steps", 0, 0, linear_steps);
         search->finish();
     }
 
@@ -184,9 +231,18 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
         draw.vertices.data.push_back(glm::vec4(float(c.x * uv_per_unit), float(c.y * uv_per_unit), 0.0f, 1.0f));
     }
     draw.indices = {0, 1, 2, 0, 2, 3};
-    const HeightField solid =
-        flat ? HeightField{stones.size, std::vector<double>(size_t(stones.size) * size_t(stones.size), flat_height)}
-             : stone_heights(stones);
+    HeightField solid;
+    if (heights == "file") {
+        solid = std::move(from_file);
+    } else if (heights == "stones") {
+        solid = stone_heights(stones);
+    } else {
+        solid = HeightField{stones.size, std::vector<double>(size_t(stones.size) * size_t(stones.size), flat_height)};
+        if (wall_spacing > 0)
+            for (int y = 0; y < stones.size; ++y)
+                for (int x = 0; x < stones.size; ++x)
+                    if (x % wall_spacing == 0 || y % wall_spacing == 0) solid.h[size_t(y) * size_t(stones.size) + size_t(x)] = 1.0;
+    }
     draw.textures.push_back(relief_texture(solid, depth, "relief_map"));
     draw.textures.push_back(stone_colour_texture(stones, "colour_map"));
     if (two_layer) {
@@ -214,6 +270,7 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
             draw.uniforms.push_back(int_uniform("intensify", intensify ? 1 : 0));
         } else {
             draw.uniforms.push_back(uniform("world_depth", float(depth / uv_per_unit)));
+            draw.uniforms.push_back(int_uniform("min_linear_steps", min_linear_steps));
         }
         draw.uniforms.push_back(int_uniform("linear_steps", linear_steps));
         draw.uniforms.push_back(int_uniform("binary_steps", binary_steps));

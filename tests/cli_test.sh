@@ -144,6 +144,19 @@ for line in sys.stdin:
     expect_bad_input "relief negative d0" "$bin" render relief-absorption --set 'liquid.half_distance=[-0.03,0.08,0.5]'
     expect_bad_input "relief no light crossings" "$bin" render relief-occlusion --set liquid.max_crossings=0
     expect_bad_input "relief zero sun direction" "$bin" render relief-two-layer --set 'environment.sun_direction=[0,0,0]'
+    # Height maps from files: missing, not an image, not square, outside [0, 1].
+    hm=(--set 'surface.heights="file"')
+    expect_bad_input "relief missing height map" "$bin" render relief-mapping "${hm[@]}" \
+      --set "surface.height_map=\"$work/none.png\""
+    printf 'not a png' >"$work/bad.png"
+    expect_bad_input "relief malformed height map" "$bin" render relief-mapping "${hm[@]}" \
+      --set "surface.height_map=\"$work/bad.png\""
+    oiiotool --pattern constant:color=0.5 16x8 1 -d uint8 -o "$work/oblong.png"
+    expect_bad_input "relief oblong height map" "$bin" render relief-mapping "${hm[@]}" \
+      --set "surface.height_map=\"$work/oblong.png\""
+    oiiotool --pattern constant:color=2 8x8 1 -d float -o "$work/high.exr"
+    expect_bad_input "relief height above 1" "$bin" render relief-mapping "${hm[@]}" \
+      --set "surface.height_map=\"$work/high.exr\""
     ;;
 
   relief_flat)
@@ -213,6 +226,93 @@ PY
     echo "mean red: intensified $on, not $off, no highlight $none"
     python3 -c "import sys; a, b, c = map(float, sys.argv[1:]); sys.exit(0 if a > b > c else 1)" "$on" "$off" "$none" ||
       fail "intensification does not order the highlights"
+    ;;
+
+  relief_failures)
+    # Where the methods fail (issue 10), each with its outcome on both
+    # pipelines (the twin's side, measured against the exact intersection,
+    # is kernels/relief/relief_search_test.cpp). Small frames: CI time.
+    small=(--set width=320 --set height=240)
+    agree() {  # scene, name, overrides...: compare passes and writes nothing non-finite
+      local scene=$1 name=$2; shift 2
+      "$bin" compare "$scene" "${small[@]}" "$@" --json --out "$work/$name" >"$work/$name.json" ||
+        { cat "$work/$name.json"; fail "$name: the pipelines disagree"; }
+      grep -q '"nonfinite":0,' "$work/$name.json" || fail "$name: non-finite pixels"
+    }
+    apart() {  # name a, name b, scene, least 8-bit difference
+      local d
+      d=$("$bin" diff "$work/$1/$3.cpu.exr" "$work/$2/$3.cpu.exr" --json || true)
+      echo "$1 against $2: $d"
+      python3 -c "import json,sys; sys.exit(0 if json.loads(sys.argv[1])['max_diff_8bit'] >= int(sys.argv[2]) else 1)" "$d" "$4" ||
+        fail "$1 against $2: expected at least $4 LSB apart"
+    }
+    # Walls one texel thin: 4 linear steps step over them where 64 do not.
+    walls=(--set 'surface.heights="walls"' --set view.angle_deg=60)
+    agree relief-mapping walls4 "${walls[@]}" --set search.linear_steps=4
+    agree relief-mapping walls64 "${walls[@]}" --set search.linear_steps=64
+    apart walls4 walls64 relief-mapping 128
+    # Total internal reflection of the view ray (a medium less dense than
+    # the air above it: refract's zero vector, all reflected) against the
+    # ordinary medium.
+    agree relief-two-layer tir --set liquid.ior=0.6 --set view.angle_deg=60
+    agree relief-two-layer water --set view.angle_deg=60
+    apart tir water relief-two-layer 16
+    # The light ray: one crossing of the medium followed against sixteen,
+    # and a light so low that it is totally reflected leaving the medium.
+    agree relief-occlusion cross1 --set liquid.max_crossings=1
+    agree relief-occlusion cross16 --set liquid.max_crossings=16
+    apart cross1 cross16 relief-occlusion 1
+    agree relief-occlusion low_light --set 'light.position=[4,-2,0.15]'
+    # A height map from a file: a constant one gives the flat scene's bytes
+    # (128/255 both ways), so the same image; a checkerboard agrees on both
+    # pipelines.
+    oiiotool --pattern constant:color=0.5 256x256 1 -d uint8 -o "$work/half.png"
+    file=(--set 'surface.heights="file"')
+    "$bin" render relief-mapping "${small[@]}" "${file[@]}" --set "surface.height_map=\"$work/half.png\"" \
+      --out "$work/hf" >"$work/hf.json"
+    "$bin" render relief-mapping "${small[@]}" --set 'surface.heights="flat"' --set surface.flat_height=0.50196078 \
+      --out "$work/hflat" >"$work/hflat.json"
+    cmp -s <(grep -o '"hash":"[0-9A-F]*"' "$work/hf.json") <(grep -o '"hash":"[0-9A-F]*"' "$work/hflat.json") ||
+      fail "a constant height map file differs from the flat heights"
+    oiiotool --pattern checker:width=8:height=8:color1=1:color2=0 64x64 1 -d uint8 -o "$work/checker.png"
+    agree relief-mapping checker "${file[@]}" --set surface.map_size=64 --set "surface.height_map=\"$work/checker.png\""
+    expect_bad_input "relief map size against the file" "$bin" render relief-mapping "${file[@]}" \
+      --set "surface.height_map=\"$work/checker.png\""
+    # Grazing: the reflected rays leave the box for the environment, the
+    # view rays stair-step; the surface ends at a horizon.
+    agree relief-two-layer grazing --set view.angle_deg=84 --set view.horizon_distance=12
+    ;;
+
+  sweep_relief)
+    # The step count scaled by the view angle is the same program on both
+    # pipelines, and it changes the image.
+    "$bin" compare relief-mapping --set width=200 --set height=150 --set search.linear_steps=64 \
+      --set search.min_linear_steps=4 --set view.angle_deg=60 --json --out "$work/scaled" >"$work/scaled.json"
+    python3 -c "import json, sys; d = json.loads(open(sys.argv[1]).readline()); sys.exit(0 if d['identical_fraction_float'] == 1 and d['coverage_mismatch'] == 0 else 1)" "$work/scaled.json" ||
+      fail "scaled steps: the pipelines differ"
+    "$bin" render relief-mapping --set width=200 --set height=150 --set search.linear_steps=64 \
+      --set view.angle_deg=60 --out "$work/fixed" >"$work/fixed.json"
+    "$bin" render relief-mapping --set width=200 --set height=150 --set search.linear_steps=64 \
+      --set search.min_linear_steps=4 --set view.angle_deg=60 --out "$work/fewer" >"$work/fewer.json"
+    ! cmp -s <(grep -o '"hash":"[0-9A-F]*"' "$work/fixed.json") <(grep -o '"hash":"[0-9A-F]*"' "$work/fewer.json") ||
+      fail "scaled steps change nothing"
+    # The sweep at a small size: every setting at every angle, a chart per
+    # angle, and the error falling as the search refines.
+    "$bin" sweep relief --frames 1 --set width=160 --set height=120 --out "$work/sweep" >"$work/sweep.md" ||
+      fail "sweep relief failed"
+    [ "$(wc -l <"$work/sweep/relief-sweep.csv")" -eq 321 ] || fail "sweep relief: expected 320 settings"
+    for a in 30 60 75 85; do [ -s "$work/sweep/relief-sweep-${a}deg.svg" ] || fail "sweep relief: no chart at $a"; done
+    python3 - "$work/sweep/relief-sweep.csv" <<'PY' || fail "sweep relief: errors do not fall with steps"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+for angle in ("30", "60", "75", "85"):
+    at = {(r["linear_steps"], r["min_linear_steps"], r["binary_steps"], r["secant"]): r for r in rows if r["angle_deg"] == angle}
+    coarse, fine = at[("4", "0", "0", "0")], at[("128", "0", "10", "1")]
+    for key in ("texel_err_mean", "depth_err_mean", "image_rms_8bit"):
+        assert float(fine[key]) < float(coarse[key]), (angle, key, fine[key], coarse[key])
+    assert any(r["undominated"] == "1" for r in at.values()), angle
+    print(angle, "texel error", coarse["texel_err_mean"], "->", fine["texel_err_mean"])
+PY
     ;;
 
   bench_shape)

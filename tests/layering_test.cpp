@@ -29,7 +29,9 @@ const std::map<std::string, std::set<std::string>>& allowed() {
         {"raster", {"frame", "image", "simd", "texture", "shading"}},
         {"kernels", {"frame", "simd", "texture", "shading"}},
         {"gl", {"frame", "image"}},
-        {"reference", {"kernels"}},
+        // Ground truth sits above the twins it measures, and reads their
+        // textures and samplers.
+        {"reference", {"frame", "simd", "texture", "shading", "kernels"}},
         {"optics", {"reference"}},
         {"scene", {"frame", "image", "simd", "texture", "shading", "kernels"}},
         {"app", {"frame", "image", "simd", "texture", "shading", "raster", "kernels", "gl", "scene", "reference",

@@ -56,6 +56,7 @@ public:
     glm::vec4 sample(const glm::vec2& st) const;
     glm::vec4 fetch(int x, int y) const;
 
+    const Texture& texture() const { return *tex_; }
     int width() const { return tex_->width; }
     int height() const { return tex_->height; }
 

@@ -17,6 +17,11 @@ uniform float specular;
 uniform float depth;        // the layer's thickness, texture units
 uniform float world_depth;  // the same in world units
 uniform int linear_steps;
+// > 0: the linear steps scaled by the view angle, common practice (the
+// offset is short where the view is steep): mix(linear_steps,
+// min_linear_steps, dot(N, V)), N = (0, 0, 1), truncated; 0: always
+// linear_steps.
+uniform int min_linear_steps;
 uniform int binary_steps;
 uniform bool secant;
 
@@ -27,7 +32,11 @@ void main() {
     vec2 dx = dFdx(uv);
     vec2 dy = dFdy(uv);
     vec2 offset = -v.xy * (depth / v.z);
-    float t = trace_height_field(relief_map, uv, offset, dx, dy, linear_steps, binary_steps, secant);
+    // mix() written out: the same operations on both pipelines.
+    int steps = min_linear_steps > 0
+                    ? int(float(linear_steps) + (float(min_linear_steps) - float(linear_steps)) * v.z)
+                    : linear_steps;
+    float t = trace_height_field(relief_map, uv, offset, dx, dy, steps, binary_steps, secant);
     vec2 hit_uv = uv + offset * t;
     vec3 hit = p - v * (t * world_depth / v.z);
     vec3 n = decode_normal(textureGrad(relief_map, hit_uv, dx, dy));

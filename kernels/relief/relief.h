@@ -2,6 +2,8 @@
 // one class per GLSL file, each .cpp named after its GLSL file.
 #pragma once
 
+#include <memory>
+
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
@@ -11,6 +13,18 @@ namespace st {
 
 class Sampler2D;
 class SamplerCube;
+
+// A replacement for the relief search, for measuring only (the relief
+// sweep, app/relief_exact.h): the first crossing of each lane's ray with
+// the height field, on the levels the search's reads would blend. bind()
+// is called from the program's bind, before any fragment.
+class ReliefIntersector {
+public:
+    virtual ~ReliefIntersector() = default;
+    virtual void bind(const Sampler2D& map) = 0;
+    virtual Float first_crossing(const Sampler2D& map, const Vec2& uv, const Vec2& offset, const Vec2& dx,
+                                 const Vec2& dy) const = 0;
+};
 
 class ReliefVertex final : public VertexTwin {  // relief.vert
 public:
@@ -43,6 +57,9 @@ private:
 
 class ReliefMappingFragment final : public FragmentProgram<ReliefMappingFragment> {  // relief_mapping.frag
 public:
+    ReliefMappingFragment() = default;
+    // With an intersector, its crossing replaces the search (CPU only).
+    explicit ReliefMappingFragment(std::shared_ptr<ReliefIntersector> exact) : exact_(std::move(exact)) {}
     void bind(const Bindings& b) override;
     uint32_t inputs_read() const override;
     Vec4 main(const Fragment& frag) const;
@@ -50,9 +67,12 @@ public:
 private:
     ReliefLighting u_;
     float depth_ = 0.0f, world_depth_ = 0.0f;
-    int linear_steps_ = 1, binary_steps_ = 0;
+    int linear_steps_ = 1, min_linear_steps_ = 0, binary_steps_ = 0;
     bool secant_ = false;
     int ulp_perturbation_ = 0;  // the condition map's, CPU only (relief_search.h)
+    // The sweep's measuring modes, CPU only (relief_mapping_frag.cpp).
+    bool output_hit_ = false;
+    std::shared_ptr<ReliefIntersector> exact_;
 };
 
 class TwoLayerFragment final : public FragmentProgram<TwoLayerFragment> {  // two_layer.frag

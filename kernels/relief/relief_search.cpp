@@ -10,19 +10,20 @@
 namespace st::relief {
 
 Float trace_segment(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, Float a, Float dh,
-                    Float side, const Vec2& dx, const Vec2& dy, int linear_steps, int binary_steps, bool secant,
+                    Float side, const Vec2& dx, const Vec2& dy, Int linear_steps, int binary_steps, bool secant,
                     Mask& hit) {
     // Every read below has the entry's derivatives, so one level choice
     // serves them all (Sampler2D::grad_levels; the same bits), and only
     // heights are read (sample_grad_alpha).
     const texel::LevelChoice levels = map.grad_levels(dx, dy);
-    const Float size = Float(1.0f) / Float(float(linear_steps));
+    // One count per lane (scaled by the view angle) or the same on all.
+    const Float size = Float(1.0f) / simd::to_float(linear_steps);
     Float s = 0.0f;
     Float h = map.sample_grad_alpha(uv, levels);
     Float h_prev = h;
     Int i = 0;
     exec.loop([&](Loop& loop) {
-        loop.break_if(!(i < Int(linear_steps)));
+        loop.break_if(!(i < linear_steps));
         exec.assign(h_prev, h);
         const Float s_next = s + size;
         exec.assign(s, s_next);
@@ -75,7 +76,7 @@ Mask segment_blocked(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec
 }
 
 Float trace_height_field(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, const Vec2& dx,
-                         const Vec2& dy, int linear_steps, int binary_steps, bool secant) {
+                         const Vec2& dy, Int linear_steps, int binary_steps, bool secant) {
     Mask hit;
     return trace_segment(exec, map, uv, offset, Float(1.0f), Float(-1.0f), Float(1.0f), dx, dy, linear_steps,
                          binary_steps, secant, hit);

@@ -24,7 +24,7 @@ inline Vec3 perturbed(const Vec3& v, int ulps) {
 // `exec` is the invocation's execution mask: the linear search is a loop
 // whose lanes leave at different steps.
 Float trace_segment(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, Float a, Float dh,
-                    Float side, const Vec2& dx, const Vec2& dy, int linear_steps, int binary_steps, bool secant,
+                    Float side, const Vec2& dx, const Vec2& dy, Int linear_steps, int binary_steps, bool secant,
                     Mask& hit);
 
 Mask segment_blocked(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, Float a, Float dh,
@@ -33,6 +33,6 @@ Mask segment_blocked(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec
 // `exec` is the invocation's execution mask: the linear search is a loop
 // whose lanes leave at different steps.
 Float trace_height_field(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, const Vec2& dx,
-                         const Vec2& dy, int linear_steps, int binary_steps, bool secant);
+                         const Vec2& dy, Int linear_steps, int binary_steps, bool secant);
 
 }  // namespace st::relief
