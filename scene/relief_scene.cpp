@@ -177,6 +177,17 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
         }
         liquid_r.finish();
     }
+    // Planar local reflections (rows 3-5): the refracted and reflected view
+    // rays against a flat plane at plane_height instead of searched.
+    bool planar = false;
+    double plane_height = 0.5;
+    if (two_layer) {
+        if (auto refl = scene.object_if("reflections")) {
+            planar = refl->boolean_or("planar", planar);
+            plane_height = refl->number_or("plane_height", plane_height, 0.0, 1.0);
+            refl->finish();
+        }
+    }
     int sky_size = 64;
     std::vector<double> sun{0.4, 0.3, 0.6};
     double sun_radiance = 30.0, sun_radius = 2.0;
@@ -268,6 +279,8 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
             draw.uniforms.push_back(uniform("half_distance", half_distance));
             draw.uniforms.push_back(uniform("liquid_specular", liquid_specular));
             draw.uniforms.push_back(int_uniform("intensify", intensify ? 1 : 0));
+            draw.uniforms.push_back(int_uniform("planar", planar ? 1 : 0));
+            draw.uniforms.push_back(uniform("plane_height", float(plane_height)));
         } else {
             draw.uniforms.push_back(uniform("world_depth", float(depth / uv_per_unit)));
             draw.uniforms.push_back(int_uniform("min_linear_steps", min_linear_steps));

@@ -263,6 +263,21 @@ PY
     agree relief-occlusion cross16 --set liquid.max_crossings=16
     apart cross1 cross16 relief-occlusion 1
     agree relief-occlusion low_light --set 'light.position=[4,-2,0.15]'
+    # Planar local reflections (relief-planar): both pipelines agree; near
+    # the searched image on a nearly flat surface, far from it on Table 1's
+    # deep stones (every pixel is seen through the film).
+    agree relief-planar planar
+    for d in 0.015 0.08; do
+      for p in true false; do
+        "$bin" render relief-planar "${small[@]}" --set surface.depth=$d --set reflections.planar=$p --backend cpu \
+          --out "$work/pl-$d-$p" >/dev/null
+      done
+      psnr=$("$bin" diff "$work/pl-$d-true/relief-planar.cpu.exr" "$work/pl-$d-false/relief-planar.cpu.exr" --json |
+             python3 -c "import json,sys; print(json.load(sys.stdin)['psnr'])" || true)
+      echo "planar against searched at depth $d: PSNR $psnr dB"
+      python3 -c "import sys; p, d = float(sys.argv[1]), sys.argv[2]; sys.exit(0 if (p > 45 if d == '0.015' else p < 35) else 1)" "$psnr" "$d" ||
+        fail "planar reflections at depth $d: PSNR $psnr against the searched image"
+    done
     # A height map from a file: a constant one gives the flat scene's bytes
     # (128/255 both ways), so the same image; a checkerboard agrees on both
     # pipelines.

@@ -39,6 +39,11 @@ uniform float shadow_bias;   // solid-layer heights the light ray starts above i
 uniform vec3 half_distance;  // Eq. 1's d0 per channel, world units
 uniform float liquid_specular;  // the light's highlight on the medium (0 in Table 1's rows)
 uniform bool intensify;         // Phong-specular intensification (Sec. 3.2)
+// Planar local reflections (Sec. 3.2): the refracted and reflected view
+// rays meet a flat plane at plane_height (the solid layer's units, 1 at the
+// top of its box) instead of being searched.
+uniform bool planar;
+uniform float plane_height;
 
 // Eq. 1, I = 1 - (1/2)^(d/d0), read as the part of the light the medium
 // absorbs over a distance d: the part that survives is (1/2)^(d/d0), so d0
@@ -139,8 +144,15 @@ void main() {
         // Refraction: down to the solid layer's floor, which stops it.
         float down = (depth - z_liquid) / max(-refracted.z, 1e-4);
         vec2 down_offset = refracted.xy * down;
-        float s = trace_segment(relief_map, at_uv, down_offset, a, -a, 1.0, dx, dy, linear_steps, binary_steps, secant,
-                                hit);
+        float s;
+        if (planar) {
+            // Falling from a to 0 along the segment: the plane at s = (a - h) / a,
+            // or at once where the ray starts below it.
+            s = a > plane_height ? (a - plane_height) / a : 0.0;
+        } else {
+            s = trace_segment(relief_map, at_uv, down_offset, a, -a, 1.0, dx, dy, linear_steps, binary_steps, secant,
+                              hit);
+        }
         float refracted_length = s * down;  // texture units, all of it taken as inside the medium
         vec3 refraction = shade_solid(at_uv + down_offset * s, at + refracted * (refracted_length * world_per_uv),
                                       z_liquid + (depth - z_liquid) * s, -refracted, dx, dy) *
@@ -149,8 +161,16 @@ void main() {
         // the way or leaving for the environment.
         float up = z_liquid / max(reflected.z, 1e-4);
         vec2 up_offset = reflected.xy * up;
-        float s_up = trace_segment(relief_map, at_uv, up_offset, a, 1.0 - a, 1.0, dx, dy, linear_steps, binary_steps,
-                                   secant, hit);
+        float s_up;
+        if (planar) {
+            // Rising from a to 1: the plane from below where the ray starts
+            // under it, else the environment.
+            hit = a < plane_height;
+            s_up = hit ? (plane_height - a) / (1.0 - a) : 1.0;
+        } else {
+            s_up = trace_segment(relief_map, at_uv, up_offset, a, 1.0 - a, 1.0, dx, dy, linear_steps, binary_steps,
+                                 secant, hit);
+        }
         vec3 local = shade_solid(at_uv + up_offset * s_up, at + reflected * (s_up * up * world_per_uv),
                                  z_liquid - z_liquid * s_up, -reflected, dx, dy);
         vec3 reflection = hit ? local : textureLod(environment, reflected, 0.0).rgb;

@@ -99,6 +99,8 @@ private:
     glm::vec3 half_distance_{1.0f};
     float liquid_specular_ = 0.0f;
     bool intensify_ = false;
+    bool planar_ = false;  // planar local reflections
+    float plane_height_ = 0.5f;
     int ulp_perturbation_ = 0;  // the condition map's, CPU only (relief_search.h)
 };
 

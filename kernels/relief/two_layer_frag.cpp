@@ -26,6 +26,8 @@ void TwoLayerFragment::bind(const Bindings& b) {
     binary_steps_ = b.get_int("binary_steps");
     secant_ = b.get_int("secant") != 0;
     ulp_perturbation_ = b.get_int_or("ulp_perturbation", 0);
+    planar_ = b.get_int("planar") != 0;
+    plane_height_ = b.get_float("plane_height");
     occlusion_ = b.get_int("occlusion") != 0;
     absorption_ = b.get_int("absorption") != 0;
     max_crossings_ = b.get_int("max_crossings");
@@ -132,8 +134,12 @@ Vec4 TwoLayerFragment::main(const Fragment& frag) const {
             Mask hit;
             const Float down = (Float(depth_) - z_liquid) / glsl::max(-refracted.z, Float(1e-4f));
             const Vec2 down_offset = Vec2(refracted.x, refracted.y) * down;
-            const Float s = relief::trace_segment(exec, *u_.relief_map, at_uv, down_offset, a, -a, Float(1.0f), dx,
-                                                  dy, linear_steps_, binary_steps_, secant_, hit);
+            // A uniform branch: the same value on every lane, as the GLSL's if.
+            const Float plane(plane_height_);
+            const Float s = planar_ ? glsl::select(a > plane, (a - plane) / a, Float(0.0f))
+                                    : relief::trace_segment(exec, *u_.relief_map, at_uv, down_offset, a, -a,
+                                                            Float(1.0f), dx, dy, linear_steps_, binary_steps_, secant_,
+                                                            hit);
             const Float refracted_length = s * down;
             const Vec3 refraction =
                 shade_solid(exec, at_uv + down_offset * s, at + refracted * (refracted_length * Float(world_per_uv_)),
@@ -142,8 +148,14 @@ Vec4 TwoLayerFragment::main(const Fragment& frag) const {
                 surviving(refracted_length * Float(world_per_uv_));
             const Float up = z_liquid / glsl::max(reflected.z, Float(1e-4f));
             const Vec2 up_offset = Vec2(reflected.x, reflected.y) * up;
-            const Float s_up = relief::trace_segment(exec, *u_.relief_map, at_uv, up_offset, a, Float(1.0f) - a, Float(1.0f), dx,
-                                                     dy, linear_steps_, binary_steps_, secant_, hit);
+            Float s_up;
+            if (planar_) {
+                hit = a < plane;
+                s_up = glsl::select(hit, (plane - a) / (Float(1.0f) - a), Float(1.0f));
+            } else {
+                s_up = relief::trace_segment(exec, *u_.relief_map, at_uv, up_offset, a, Float(1.0f) - a, Float(1.0f),
+                                             dx, dy, linear_steps_, binary_steps_, secant_, hit);
+            }
             const Vec3 local = shade_solid(exec, at_uv + up_offset * s_up,
                                            at + reflected * (s_up * up * Float(world_per_uv_)), z_liquid - z_liquid * s_up,
                                            Vec3(-reflected.x, -reflected.y, -reflected.z), dx, dy);
