@@ -210,6 +210,11 @@ struct GlRenderer::State {
         DrawState state;
         std::shared_ptr<const HostStage> host_stage;
         VertexArray vertices;  // kept only when a host stage rewrites them per frame
+        // Set on every execute, after glUseProgram: draws share a program
+        // per (vertex, fragment) pair, and uniform values are the program's,
+        // so values set once at prepare would be the last draw's for all.
+        std::vector<Uniform> uniforms;
+        std::vector<std::string> sampler_names;  // per unit
     };
     // A pass: its own RGBA32F target (the frame's image), or a level of a
     // named target (fbo and colour then belong to `named`).
@@ -353,8 +358,7 @@ void GlRenderer::prepare(const Frame& frame) {
                          dc.indices.data(), GL_STATIC_DRAW);
             glBindVertexArray(0);
 
-            glUseProgram(d.program);
-            for (const Uniform& u : dc.uniforms) set_uniform(d.program, u);
+            d.uniforms = dc.uniforms;
             for (size_t unit = 0; unit < dc.textures.size(); ++unit) {
                 const Texture& tex = dc.textures[unit];
                 GLuint name = 0, sampler = 0;
@@ -376,8 +380,7 @@ void GlRenderer::prepare(const Frame& frame) {
                     upload_texture(tex);
                     d.owned_textures.push_back(name);
                 }
-                const GLint loc = glGetUniformLocation(d.program, tex.sampler.c_str());
-                if (loc >= 0) glUniform1i(loc, GLint(unit));
+                d.sampler_names.push_back(tex.sampler);
                 d.textures.push_back(name);
                 d.texture_targets.push_back(gl_target(tex));
                 d.samplers.push_back(sampler);
@@ -436,7 +439,10 @@ void GlRenderer::execute() {
                                 d.vertices.data.data());
             }
             glUseProgram(d.program);
+            for (const Uniform& u : d.uniforms) set_uniform(d.program, u);
             for (size_t unit = 0; unit < d.textures.size(); ++unit) {
+                const GLint loc = glGetUniformLocation(d.program, d.sampler_names[unit].c_str());
+                if (loc >= 0) glUniform1i(loc, GLint(unit));
                 glActiveTexture(GLenum(GL_TEXTURE0 + unit));
                 glBindTexture(d.texture_targets[unit], d.textures[unit]);
                 glBindSampler(GLuint(unit), d.samplers[unit]);

@@ -10,6 +10,7 @@
 #include "kernels/harness/coverage.h"
 #include "kernels/relief/relief.h"
 #include "kernels/triangles/interp.h"
+#include "kernels/relief/bloom.h"
 #include "kernels/triangles/textured.h"
 #include "kernels/thin_slab/thin_slab.h"
 
@@ -59,6 +60,9 @@ const std::map<std::string, Factory<FragmentTwin>>& fragment_twins() {
         {"sample_cube_grad", [] { return std::make_unique<SampleCubeGradFragment>(); }},
         {"normal_mapping", [] { return std::make_unique<NormalMappingFragment>(); }},
         {"relief_mapping", [] { return std::make_unique<ReliefMappingFragment>(); }},
+        {"bloom_bright", [] { return std::make_unique<BloomBrightFragment>(); }},
+        {"bloom_blur", [] { return std::make_unique<BloomBlurFragment>(); }},
+        {"bloom_composite", [] { return std::make_unique<BloomCompositeFragment>(); }},
         {"two_layer", [] { return std::make_unique<TwoLayerFragment>(); }},
     };
     return twins;

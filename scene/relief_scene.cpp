@@ -81,6 +81,74 @@ HeightField height_map_file(const std::string& path) {
     return f;
 }
 
+// A full-screen pass of the blooming chain: the triangles' "textured"
+// vertex program on a quad with uv 0..1, into `target` (empty: the frame).
+Pass screen_pass(const std::string& target, int width, int height, const std::string& fragment,
+                 std::vector<std::pair<std::string, std::string>> reads, std::vector<Uniform> uniforms) {
+    Pass pass;
+    pass.target = target;
+    pass.format = TargetFormat::RGBA16F;
+    if (target.empty()) pass.format = TargetFormat::RGBA32F;
+    pass.width = width;
+    pass.height = height;
+    pass.clear_colour = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    DrawCall d;
+    d.vertex = "textured";
+    d.fragment = fragment;
+    d.vertices.attribute_count = 3;  // position (clip), colour, uv
+    const float corner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (const auto& c : corner) {
+        d.vertices.data.push_back(glm::vec4(c[0], c[1], 0.0f, 1.0f));
+        d.vertices.data.push_back(glm::vec4(1.0f));
+        d.vertices.data.push_back(glm::vec4(0.5f * (c[0] + 1.0f), 0.5f * (c[1] + 1.0f), 0.0f, 1.0f));
+    }
+    d.indices = {0, 1, 2, 0, 2, 3};
+    for (const auto& [sampler, from] : reads) {
+        Texture t;
+        t.sampler = sampler;
+        t.target = from;
+        t.set_filter(TextureFilter::Linear);
+        t.set_wrap(TextureWrap::ClampToEdge);
+        d.textures.push_back(std::move(t));
+    }
+    d.uniforms = std::move(uniforms);
+    pass.draws.push_back(std::move(d));
+    return pass;
+}
+
+// The blooming chain after the scene's pass (glsl/relief/bloom_*.frag):
+// the HDR part separated at full size, down-sampled twice by bilinear
+// halving (each output pixel the 2x2 average its footprint's centre reads),
+// blurred along x then y at a quarter of the size, and added back to the
+// frame's displayable part. RGBA16F targets, as an HDR chain on a GPU keeps.
+Frame with_bloom(Pass scene_pass, SceneSize size, float threshold, float strength) {
+    const int w = size.width, h = size.height, hw = std::max(1, w / 2), hh = std::max(1, h / 2);
+    const int qw = std::max(1, w / 4), qh = std::max(1, h / 4);
+    Frame f;
+    auto target = [&](const std::string& name, int tw, int th) {
+        f.targets.push_back(RenderTarget{name, tw, th, TargetFormat::RGBA16F, 1});
+    };
+    target("hdr", w, h);
+    target("bright", w, h);
+    target("half", hw, hh);
+    target("quarter", qw, qh);
+    target("blur_x", qw, qh);
+    target("blur_xy", qw, qh);
+    scene_pass.target = "hdr";
+    scene_pass.format = TargetFormat::RGBA16F;
+    f.passes.push_back(std::move(scene_pass));
+    f.passes.push_back(screen_pass("bright", w, h, "bloom_bright", {{"hdr", "hdr"}}, {uniform("threshold", threshold)}));
+    f.passes.push_back(screen_pass("half", hw, hh, "textured", {{"tex", "bright"}}, {}));
+    f.passes.push_back(screen_pass("quarter", qw, qh, "textured", {{"tex", "half"}}, {}));
+    f.passes.push_back(screen_pass("blur_x", qw, qh, "bloom_blur", {{"src", "quarter"}},
+                                   {uniform("texel_step", glm::vec2(1.0f / float(qw), 0.0f))}));
+    f.passes.push_back(screen_pass("blur_xy", qw, qh, "bloom_blur", {{"src", "blur_x"}},
+                                   {uniform("texel_step", glm::vec2(0.0f, 1.0f / float(qh)))}));
+    f.passes.push_back(screen_pass("", w, h, "bloom_composite", {{"hdr", "hdr"}, {"bloom", "blur_xy"}},
+                                   {uniform("strength", strength)}));
+    return f;
+}
+
 }  // namespace
 
 Frame build_relief_scene(JsonReader& scene, SceneSize size) {
@@ -202,6 +270,21 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
             throw InputError("field 'environment.sun_direction' must not be the zero vector");
     }
 
+    // Light blooming (Sec. 3.2), rows 3-5: the frame rendered into an HDR
+    // target, then passes that separate, down-sample, blur and add back.
+    bool bloom = false;
+    double bloom_threshold = 1.0, bloom_strength = 1.0;
+    if (two_layer) {
+        if (auto bloom_r = scene.object_if("bloom")) {
+            bloom = bloom_r->boolean_or("enabled", true);
+            bloom_threshold = bloom_r->number_or("threshold", bloom_threshold, 0.0, 65000.0);
+            bloom_strength = bloom_r->number_or("strength", bloom_strength, 0.0, 1000.0);
+            bloom_r->finish();
+        }
+        if (bloom && (size.width < 8 || size.height < 8))
+            throw InputError("field 'bloom': blooming needs a frame of at least 8x8 (it blurs a quarter-size copy)");
+    }
+
     JsonReader shading_r = scene.object("shading");
     const float ambient = float(shading_r.number_or("ambient", 0.15, 0.0, 10.0));
     const float specular = float(shading_r.number_or("specular", 0.35, 0.0, 100.0));
@@ -296,6 +379,7 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
     pass.clear_colour = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
     pass.draws.push_back(std::move(draw));
     Frame frame;
+    if (bloom) return with_bloom(std::move(pass), size, float(bloom_threshold), float(bloom_strength));
     frame.passes.push_back(std::move(pass));
     return frame;
 }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "frame/frame.h"
@@ -21,6 +22,12 @@ inline Uniform uniform(const std::string& name, float v) {
 inline Uniform int_uniform(const std::string& name, int v) {
     Uniform u{name, UniformType::Int, {}};
     u.value[0] = float(v);
+    return u;
+}
+
+inline Uniform uniform(const std::string& name, const glm::vec2& v) {
+    Uniform u{name, UniformType::Vec2, {}};
+    for (int c = 0; c < 2; ++c) u.value[size_t(c)] = v[c];
     return u;
 }
 
