@@ -265,6 +265,12 @@ PY
     agree relief-occlusion cross16 --set liquid.max_crossings=16
     apart cross1 cross16 relief-occlusion 1
     agree relief-occlusion low_light --set 'light.position=[4,-2,0.15]'
+    # The translucent features besides drops: a glass coating over every
+    # stone (no drops, the film at 0.95 of the medium's box, IOR 1.5) and a
+    # layer of water between them (film at 0.7, hued); both agree.
+    flat_medium() { echo --set liquid.drops=0 --set liquid.level=$1 --set liquid.min_peak=$1 --set liquid.max_peak=$1; }
+    agree relief-two-layer glass $(flat_medium 0.95) --set liquid.ior=1.5
+    agree relief-absorption water_layer $(flat_medium 0.7)
     # Planar local reflections (relief-planar): both pipelines agree; near
     # the searched image on a nearly flat surface, far from it on Table 1's
     # deep stones (every pixel is seen through the film).
