@@ -44,6 +44,20 @@ struct Setting {
     }
 };
 
+double quantile(std::vector<double> v, double q) {
+    if (v.empty()) return 0;
+    const size_t k = std::min(v.size() - 1, size_t(q * double(v.size())));
+    std::nth_element(v.begin(), v.begin() + long(k), v.end());
+    return v[k];
+}
+
+// The 8-bit RGB difference of two images over the covered pixels (finite
+// in the exact hit image): its RMS over channels, and per pixel the largest
+// channel difference, whose 99.9th percentile, maximum and share above one
+// step the tables show.
+struct ImageError {
+    double rms = 0, p999 = 0, max = 0, over_1lsb = 0;
+};
 struct Result {
     Setting setting;
     std::vector<double> ms;  // one per round
@@ -53,11 +67,11 @@ struct Result {
     // the 8-bit RGB difference of the image.
     double texel_mean = 0, texel_p99 = 0, texel_max = 0;
     double depth_mean = 0, depth_max = 0;
-    double image_rms = 0, image_p999 = 0, image_max = 0, over_1lsb = 0;
-    // The same against the converged search (kConverged): what is left is
-    // the search's own error, without the floor that the 8-bit filtered
-    // surface the search reads sets against the exact one.
-    double converged_rms = 0, converged_over_1lsb = 0;
+    ImageError image;  // against the exact image
+    // Against the converged search (kConverged): what is left is the
+    // search's own error, without the floor that the 8-bit filtered surface
+    // the search reads sets against the exact one.
+    ImageError converged;
     bool undominated = false;
 };
 
@@ -70,27 +84,28 @@ constexpr Setting kConverged{512, 0, 16, true};
 // heat maps), so no finite search holds all of them.
 constexpr double kWithinStep = 0.01;
 
-// The RMS of the 8-bit RGB difference over the covered pixels, and the
-// fraction of them more than one step apart in some channel.
-struct ImageError {
-    double rms = 0, over_1lsb = 0;
-};
+
 ImageError image_error(const Image& a, const Image& b, const Image& ref_hits) {
+    std::vector<double> worst;
     double sq = 0;
-    long n = 0, over = 0;
     for (size_t p = 0; p < ref_hits.rgba.size() / 4; ++p) {
         if (!std::isfinite(ref_hits.rgba[4 * p])) continue;
-        double worst = 0;
+        double w = 0;
         for (size_t c = 0; c < 3; ++c) {
             const double d = double(to_unorm8(a.rgba[4 * p + c])) - double(to_unorm8(b.rgba[4 * p + c]));
             sq += d * d;
-            worst = std::max(worst, std::abs(d));
+            w = std::max(w, std::abs(d));
         }
-        over += worst > 1;
-        ++n;
+        worst.push_back(w);
     }
-    const double pixels = double(std::max(1L, n));
-    return ImageError{std::sqrt(sq / (3 * pixels)), double(over) / pixels};
+    if (worst.empty()) return {};
+    const double n = double(worst.size());
+    ImageError e;
+    e.rms = std::sqrt(sq / (3 * n));
+    e.p999 = quantile(worst, 0.999);
+    e.max = *std::max_element(worst.begin(), worst.end());
+    e.over_1lsb = double(std::count_if(worst.begin(), worst.end(), [](double w) { return w > 1; })) / n;
+    return e;
 }
 
 std::vector<Setting> settings() {
@@ -103,44 +118,37 @@ std::vector<Setting> settings() {
     return out;
 }
 
-// The frame with an int uniform set on every draw (replaced or added).
-Frame with_int(Frame f, const std::string& name, int value) {
+// An int uniform set on every draw of the frame (replaced or added).
+void set_int(Frame& f, const std::string& name, int value) {
     for (Pass& pass : f.passes)
         for (DrawCall& d : pass.draws) {
             auto it = std::find_if(d.uniforms.begin(), d.uniforms.end(), [&](const Uniform& u) { return u.name == name; });
             if (it == d.uniforms.end()) it = d.uniforms.insert(d.uniforms.end(), Uniform{name, UniformType::Int, {}});
             it->value[0] = float(value);
         }
-    return f;
 }
 
-Frame with_setting(const Frame& base, const Setting& s) {
-    Frame f = with_int(base, "linear_steps", s.linear);
-    f = with_int(f, "min_linear_steps", s.min_linear);
-    f = with_int(f, "binary_steps", s.binary);
-    return with_int(f, "secant", s.secant ? 1 : 0);
+Frame with_setting(Frame f, const Setting& s) {
+    set_int(f, "linear_steps", s.linear);
+    set_int(f, "min_linear_steps", s.min_linear);
+    set_int(f, "binary_steps", s.binary);
+    set_int(f, "secant", s.secant ? 1 : 0);
+    return f;
 }
 
 // The hit frame: (hit_uv, t) as the colour, and a NaN clear colour so
 // that uncovered pixels are known.
-Frame hit_frame(const Frame& f) {
-    Frame h = with_int(f, "output_hit", 1);
+Frame hit_frame(Frame h) {
+    set_int(h, "output_hit", 1);
     for (Pass& p : h.passes) p.clear_colour = glm::vec4(NAN);
     return h;
 }
 
-double quantile(std::vector<double> v, double q) {
-    if (v.empty()) return 0;
-    const size_t k = std::min(v.size() - 1, size_t(q * double(v.size())));
-    std::nth_element(v.begin(), v.begin() + long(k), v.end());
-    return v[k];
-}
 
-void measure(Result& r, const Image& image, const Image& hits, const Image& ref_image, const Image& ref_hits,
-             int map_size) {
-    std::vector<double> texel, pixel;
-    double depth_sum = 0, sq = 0;
-    long over = 0;
+// The hit's error against the exact hit, over the covered pixels.
+void measure_hits(Result& r, const Image& hits, const Image& ref_hits, int map_size) {
+    std::vector<double> texel;
+    double depth_sum = 0;
     for (size_t p = 0; p < ref_hits.rgba.size() / 4; ++p) {
         const float* e = &ref_hits.rgba[4 * p];
         if (!std::isfinite(e[0])) continue;  // uncovered
@@ -150,27 +158,15 @@ void measure(Result& r, const Image& image, const Image& hits, const Image& ref_
         const double dt = std::abs(double(h[2]) - e[2]);
         depth_sum += dt;
         r.depth_max = std::max(r.depth_max, dt);
-        int worst = 0;
-        for (int c = 0; c < 3; ++c) {
-            const int d = std::abs(int(to_unorm8(image.rgba[4 * p + size_t(c)])) -
-                                   int(to_unorm8(ref_image.rgba[4 * p + size_t(c)])));
-            sq += double(d) * d;
-            worst = std::max(worst, d);
-        }
-        pixel.push_back(worst);
-        over += worst > 1;
     }
-    const double n = double(std::max<size_t>(1, texel.size()));
+    if (texel.empty()) return;
+    const double n = double(texel.size());
     double texel_sum = 0;
     for (double t : texel) texel_sum += t;
     r.texel_mean = texel_sum / n;
     r.texel_p99 = quantile(texel, 0.99);
-    r.texel_max = texel.empty() ? 0 : *std::max_element(texel.begin(), texel.end());
+    r.texel_max = *std::max_element(texel.begin(), texel.end());
     r.depth_mean = depth_sum / n;
-    r.image_rms = std::sqrt(sq / (3 * n));
-    r.image_p999 = quantile(pixel, 0.999);
-    r.image_max = pixel.empty() ? 0 : *std::max_element(pixel.begin(), pixel.end());
-    r.over_1lsb = double(over) / n;
 }
 
 std::string num(double v, int precision = 3) {
@@ -234,11 +230,9 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
             const Frame f = with_setting(scene.frame, all[i]);
             const Rendered first = backends.render(Backend::Cpu, f);
             results[i].ms.push_back(first.ms);
-            measure(results[i], first.image, backends.render(Backend::Cpu, hit_frame(f)).image, ref_image, ref_hits,
-                    map_size);
-            const ImageError e = image_error(first.image, converged, ref_hits);
-            results[i].converged_rms = e.rms;
-            results[i].converged_over_1lsb = e.over_1lsb;
+            measure_hits(results[i], backends.render(Backend::Cpu, hit_frame(f)).image, ref_hits, map_size);
+            results[i].image = image_error(first.image, ref_image, ref_hits);
+            results[i].converged = image_error(first.image, converged, ref_hits);
         }
         // The remaining rounds time every setting once each, so that the
         // machine's drift falls on all of them alike.
@@ -248,17 +242,17 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
         for (Result& r : results) r.median_ms = quantile(r.ms, 0.5);
         for (Result& r : results) {
             r.undominated = std::none_of(results.begin(), results.end(), [&](const Result& o) {
-                return o.median_ms <= r.median_ms && o.image_rms <= r.image_rms &&
-                       (o.median_ms < r.median_ms || o.image_rms < r.image_rms);
+                return o.median_ms <= r.median_ms && o.image.rms <= r.image.rms &&
+                       (o.median_ms < r.median_ms || o.image.rms < r.image.rms);
             });
-            ok &= std::isfinite(r.image_rms) && std::isfinite(r.texel_mean);
+            ok &= std::isfinite(r.image.rms) && std::isfinite(r.texel_mean);
         }
 
         const Result* cheapest = nullptr;
         const Result* cheapest_converged = nullptr;
         for (const Result& r : results) {
-            if (r.over_1lsb <= kWithinStep && (!cheapest || r.median_ms < cheapest->median_ms)) cheapest = &r;
-            if (r.converged_over_1lsb <= kWithinStep &&
+            if (r.image.over_1lsb <= kWithinStep && (!cheapest || r.median_ms < cheapest->median_ms)) cheapest = &r;
+            if (r.converged.over_1lsb <= kWithinStep &&
                 (!cheapest_converged || r.median_ms < cheapest_converged->median_ms))
                 cheapest_converged = &r;
         }
@@ -286,23 +280,23 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
             const Setting& s = r->setting;
             ChartSeries& series = s.min_linear > 0 ? scaled : s.secant ? fixed_secant : fixed_plain;
             series.x.push_back(r->median_ms);
-            series.y.push_back(std::max(r->image_rms, 1e-3));
+            series.y.push_back(std::max(r->image.rms, 1e-3));
             if (r->undominated) {
                 front.x.push_back(r->median_ms);
-                front.y.push_back(std::max(r->image_rms, 1e-3));
+                front.y.push_back(std::max(r->image.rms, 1e-3));
             }
             csv << angle << ',' << s.linear << ',' << s.min_linear << ',' << s.binary << ',' << s.secant << ','
                 << r->median_ms << ',' << r->texel_mean << ',' << r->texel_p99 << ',' << r->texel_max << ','
-                << r->depth_mean << ',' << r->depth_max << ',' << r->image_rms << ',' << r->image_p999 << ','
-                << r->image_max << ',' << r->over_1lsb << ',' << r->converged_rms << ',' << r->converged_over_1lsb << ',' << r->undominated << '\n';
+                << r->depth_mean << ',' << r->depth_max << ',' << r->image.rms << ',' << r->image.p999 << ','
+                << r->image.max << ',' << r->image.over_1lsb << ',' << r->converged.rms << ',' << r->converged.over_1lsb << ',' << r->undominated << '\n';
             const bool listed = r->undominated || r == cheapest || r == cheapest_converged ||
                                 (s.linear == 16 && s.min_linear == 0 && s.binary == 6 && s.secant);
             if (!listed) continue;
             const std::string name = r->undominated ? "**" + s.label() + "**" : s.label();
             md << "| " << name << " | " << num(r->median_ms) << " | " << num(r->texel_mean) << " / "
                << num(r->texel_p99) << " / " << num(r->texel_max) << " | " << num(r->depth_mean) << " / "
-               << num(r->depth_max) << " | " << num(r->image_rms) << " / " << num(r->image_p999) << " / "
-               << num(r->image_max) << " | " << num(100 * r->over_1lsb) << " % | " << num(r->converged_rms) << ", " << num(100 * r->converged_over_1lsb) << " % |\n";
+               << num(r->depth_max) << " | " << num(r->image.rms) << " / " << num(r->image.p999) << " / "
+               << num(r->image.max) << " | " << num(100 * r->image.over_1lsb) << " % | " << num(r->converged.rms) << ", " << num(100 * r->converged.over_1lsb) << " % |\n";
         }
         Chart chart;
         chart.title = "Relief mapping at " + num(angle) + " degrees: image error against CPU time";

@@ -19,12 +19,9 @@ namespace {
 // Lanes with a non-finite ray (helper lanes outside the triangle) keep 1.
 class ExactReliefIntersector final : public ReliefIntersector {
 public:
-    void bind(const Sampler2D& map) override {
-        if (!field_ || bound_ != &map.texture()) {
-            field_ = std::make_unique<reference::ReliefHeightField>(map.texture());
-            bound_ = &map.texture();
-        }
-    }
+    // The renderer makes a twin (and so an intersector) per prepared draw and
+    // binds it once: the field is built here, for the texture just bound.
+    void bind(const Sampler2D& map) override { field_ = std::make_unique<reference::ReliefHeightField>(map.texture()); }
     Float first_crossing(const Sampler2D& map, const Vec2& uv, const Vec2& offset, const Vec2& dx,
                          const Vec2& dy) const override {
         const texel::LevelChoice c = map.grad_levels(dx, dy);
@@ -43,7 +40,6 @@ public:
 
 private:
     std::unique_ptr<reference::ReliefHeightField> field_;
-    const Texture* bound_ = nullptr;
 };
 
 }  // namespace

@@ -87,8 +87,7 @@ Pass screen_pass(const std::string& target, int width, int height, const std::st
                  std::vector<std::pair<std::string, std::string>> reads, std::vector<Uniform> uniforms) {
     Pass pass;
     pass.target = target;
-    pass.format = TargetFormat::RGBA16F;
-    if (target.empty()) pass.format = TargetFormat::RGBA32F;
+    pass.format = target.empty() ? TargetFormat::RGBA32F : TargetFormat::RGBA16F;  // the frame is RGBA32F
     pass.width = width;
     pass.height = height;
     pass.clear_colour = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
