@@ -26,6 +26,7 @@
 #include "image/image_io.h"
 #include "image/unorm8.h"
 #include "raster/cpu_renderer.h"
+#include "scene/input_error.h"
 #include "scene/scene.h"
 
 namespace st {
@@ -178,9 +179,6 @@ std::string num(double v, int precision = 3) {
 }  // namespace
 
 int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions& common) {
-    std::error_code ec;
-    std::filesystem::create_directories(out_dir, ec);
-    if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
     // Steep to grazing; past about 65 degrees at this field of view the
     // surface ends at a horizon (the clear pixels are not counted).
     const std::vector<double> angles = {30, 60, 75, 85};
@@ -203,14 +201,27 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
           "`mix(max,min)` the count scaled by the view angle. **bold**: no other setting is both faster and more "
           "accurate (in image RMS).\n";
     bool ok = true;
+    // Every angle's scene first, so that bad input stops the sweep before it
+    // writes anything.
+    std::vector<Scene> scenes;
     for (double angle : angles) {
         std::vector<std::string> overrides = common.overrides;
         overrides.push_back("view.angle_deg=" + num(angle));
         if (angle > 60) overrides.push_back("view.horizon_distance=6");
-        const Scene scene = load_scene("relief-mapping", overrides);
-        int map_size = 256;
-        if (scene.document.contains("surface") && scene.document["surface"].contains("map_size"))
-            map_size = scene.document["surface"]["map_size"].get<int>();
+        scenes.push_back(load_scene("relief-mapping", overrides));
+        if (scenes.back().frame.passes.front().draws.front().fragment != "relief_mapping")
+            throw InputError("sweep relief: field 'technique' must stay \"relief\" (the sweep measures row 2's search)");
+    }
+    std::error_code ec;
+    std::filesystem::create_directories(out_dir, ec);
+    if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
+    for (size_t a = 0; a < angles.size(); ++a) {
+        const double angle = angles[a];
+        const Scene& scene = scenes[a];
+        // Texel errors are in the relief map's level-0 texels.
+        int map_size = 0;
+        for (const Texture& t : scene.frame.passes.front().draws.front().textures)
+            if (t.sampler == "relief_map") map_size = t.width;
         Frame exact = scene.frame;
         for (Pass& pass : exact.passes)
             for (DrawCall& d : pass.draws) d.fragment = ReliefSweepTwins::kExactReliefMapping;

@@ -144,6 +144,8 @@ for line in sys.stdin:
     expect_bad_input "relief negative d0" "$bin" render relief-absorption --set 'liquid.half_distance=[-0.03,0.08,0.5]'
     expect_bad_input "relief no light crossings" "$bin" render relief-occlusion --set liquid.max_crossings=0
     expect_bad_input "relief zero sun direction" "$bin" render relief-two-layer --set 'environment.sun_direction=[0,0,0]'
+    expect_bad_input "sweep relief with a bad search" "$bin" sweep relief --set search.linear_steps=0
+    expect_bad_input "sweep relief of another row" "$bin" sweep relief --set technique='"normal-mapping"'
     expect_bad_input "relief bloom on a tiny frame" "$bin" render relief-bloom --set width=6 --set height=6
     expect_bad_input "relief bloom on row 2" "$bin" render relief-bloom --set technique='"relief"'
     # Height maps from files: missing, not an image, not square, outside [0, 1].
