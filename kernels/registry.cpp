@@ -8,6 +8,7 @@
 #include "kernels/conformance/conformance.h"
 #include "kernels/thin_slab/background.h"
 #include "kernels/harness/coverage.h"
+#include "kernels/profile/profile.h"
 #include "kernels/relief/relief.h"
 #include "kernels/triangles/interp.h"
 #include "kernels/relief/bloom.h"
@@ -29,6 +30,8 @@ const std::map<std::string, Factory<VertexTwin>>& vertex_twins() {
         {"thin_slab_vertex", [] { return std::make_unique<ThinSlabVertexVariant>(); }},
         {"thin_slab_host", [] { return std::make_unique<ThinSlabHostVertex>(); }},
         {"relief", [] { return std::make_unique<ReliefVertex>(); }},
+        {"texture_space", [] { return std::make_unique<TextureSpaceVertex>(); }},
+        {"profile", [] { return std::make_unique<ProfileVertex>(); }},
     };
     return twins;
 }
@@ -64,6 +67,10 @@ const std::map<std::string, Factory<FragmentTwin>>& fragment_twins() {
         {"bloom_blur", [] { return std::make_unique<BloomBlurFragment>(); }},
         {"bloom_composite", [] { return std::make_unique<BloomCompositeFragment>(); }},
         {"two_layer", [] { return std::make_unique<TwoLayerFragment>(); }},
+        {"irradiance", [] { return std::make_unique<IrradianceFragment>(); }},
+        {"surface", [] { return std::make_unique<SurfaceFragment>(); }},
+        {"gather", [] { return std::make_unique<GatherFragment>(); }},
+        {"gather_thin", [] { return std::make_unique<GatherThinFragment>(); }},
     };
     return twins;
 }

@@ -28,6 +28,7 @@ const std::map<std::string, SceneBuilder>& scene_builders() {
         {"thin-slab", build_thin_slab_scene},
         {"thin-slab-sweep", build_thin_slab_sweep_scene},
         {"relief", build_relief_scene},
+        {"profile", build_profile_scene},
     };
     return builders;
 }

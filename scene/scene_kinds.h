@@ -26,5 +26,6 @@ Frame build_conformance_scene(JsonReader& scene, SceneSize size);
 Frame build_thin_slab_scene(JsonReader& scene, SceneSize size);
 Frame build_thin_slab_sweep_scene(JsonReader& scene, SceneSize size);
 Frame build_relief_scene(JsonReader& scene, SceneSize size);
+Frame build_profile_scene(JsonReader& scene, SceneSize size);
 
 }  // namespace st

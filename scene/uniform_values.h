@@ -7,6 +7,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "frame/frame.h"
 
@@ -34,6 +35,12 @@ inline Uniform uniform(const std::string& name, const glm::vec2& v) {
 inline Uniform uniform(const std::string& name, const glm::vec3& v) {
     Uniform u{name, UniformType::Vec3, {}};
     for (int c = 0; c < 3; ++c) u.value[size_t(c)] = v[c];
+    return u;
+}
+
+inline Uniform uniform(const std::string& name, const glm::vec4& v) {
+    Uniform u{name, UniformType::Vec4, {}};
+    for (int c = 0; c < 4; ++c) u.value[size_t(c)] = v[c];
     return u;
 }
 

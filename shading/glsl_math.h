@@ -137,6 +137,15 @@ template <class V> ST_INLINE auto dot3(const V& a, const V& b) {
 ST_INLINE float dot(const glm::vec3& a, const glm::vec3& b) { return dot3(a, b); }
 ST_INLINE Float dot(const Vec3& a, const Vec3& b) { return dot3(a, b); }
 
+// dot(vec2, vec2): one sum of two products, so no order to choose.
+ST_INLINE Float dot(const Vec2& a, const Vec2& b) { return a.x * b.x + a.y * b.y; }
+
+// cross(a, b) as Mesa's builtin writes it: a.yzx * b.zxy - a.zxy * b.yzx,
+// two products and one difference per component.
+ST_INLINE Vec3 cross(const Vec3& a, const Vec3& b) {
+    return Vec3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+
 ST_INLINE float length(const glm::vec3& v) { return std::sqrt(dot(v, v)); }
 ST_INLINE Float length(const Vec3& v) { return simd::sqrt(dot(v, v)); }
 

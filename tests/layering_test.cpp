@@ -33,7 +33,7 @@ const std::map<std::string, std::set<std::string>>& allowed() {
         // textures and samplers.
         {"reference", {"frame", "simd", "texture", "shading", "kernels"}},
         {"optics", {"reference"}},
-        {"scene", {"frame", "image", "simd", "texture", "shading", "kernels"}},
+        {"scene", {"frame", "image", "simd", "texture", "shading", "kernels", "optics"}},
         {"app", {"frame", "image", "simd", "texture", "shading", "raster", "kernels", "gl", "scene", "reference",
                  "optics"}},
         {"bench", {"frame", "image", "simd", "texture", "shading", "raster", "kernels", "gl", "scene", "app"}},

@@ -1,0 +1,63 @@
+// profile_gather.cpp: twin of glsl/profile/profile_gather.glsl, function for
+// function. In the loop, values the GLSL computes and uses in the same pass
+// are used as computed (NIR SSA values, unmasked); the stores to the loop's
+// variables (m, k) are masked (shading/control_flow.h).
+#include "kernels/profile/profile_gather.h"
+
+#include "shading/glsl_math.h"
+#include "texture/sampler2d.h"
+
+namespace st {
+
+void GatherInputs::read(const Bindings& b, bool thin) {
+    irradiance = &b.sampler("irradiance");
+    irradiance_back = thin ? &b.sampler("irradiance_back") : nullptr;
+    position_area = &b.sampler("position_area");
+    surface_normal = &b.sampler("surface_normal");
+    profile_R = &b.sampler("profile_R");
+    profile_T = &b.sampler("profile_T");
+    pattern = &b.sampler("pattern");
+    samples = b.get_int("samples");
+    r_max = b.get_float("r_max");
+    profile_size = b.get_float("profile_size");
+    texel_uv = b.get_float("texel_uv");
+}
+
+namespace profile {
+
+Vec3 blended_profile(Float c, const Vec3& R, const Vec3& T) {
+    return Float(0.5f) * (c + Float(1.0f)) * R + Float(0.5f) * (Float(1.0f) - c) * T;
+}
+
+Vec3 diffused_light(Exec& exec, const GatherInputs& u, const Vec3& x, const Vec3& n_s, const Vec2& uv, bool thin) {
+    const Float lod0(0.0f);
+    const Float here_area = u.position_area->sample_lod(uv, lod0).w;
+    const Float uv_per_mm = glsl::inversesqrt(here_area) * Float(u.texel_uv);
+    const float table_scale = (u.profile_size - 1.0f) / u.profile_size;
+    const float table_offset = 0.5f / u.profile_size;
+    Vec3 m(Float(0.0f));
+    Int k = 0;
+    exec.loop([&](Loop& loop) {
+        loop.break_if(!(k < Int(u.samples)));
+        const Vec4 s = u.pattern->fetch(k, Int(0), Int(0));
+        const Vec2 uv_k = uv + s.xy() * uv_per_mm;
+        const Vec4 at = u.position_area->sample_lod(uv_k, lod0);
+        const Vec3 n_l = u.surface_normal->sample_lod(uv_k, lod0).xyz();
+        const Float r = glsl::length(at.xyz() - x);
+        const Vec2 tc(simd::sqrt(r / Float(u.r_max)) * Float(table_scale) + Float(table_offset), Float(0.5f));
+        const Vec3 R = u.profile_R->sample_lod(tc, lod0).xyz();
+        const Vec3 T = u.profile_T->sample_lod(tc, lod0).xyz();
+        const Float c = glsl::dot(n_s, n_l);
+        Vec3 light = u.irradiance->sample_lod(uv_k, lod0).xyz() * blended_profile(c, R, T);
+        if (thin) light = light + u.irradiance_back->sample_lod(uv_k, lod0).xyz() * blended_profile(-c, R, T);
+        const Mask on_layout = uv_k.x >= Float(0.0f) && uv_k.x <= Float(1.0f) && uv_k.y >= Float(0.0f) &&
+                               uv_k.y <= Float(1.0f);
+        const Float w = glsl::select(r < Float(u.r_max) && on_layout, s.z * (at.w / here_area), Float(0.0f));
+        exec.assign(m, m + light * w);
+        exec.assign(k, k + Int(1));
+    });
+    return m;
+}
+
+}  // namespace profile
+}  // namespace st

@@ -1,0 +1,214 @@
+// profile_scene.cpp: the "profile" kind, rendering with diffusion profiles
+// (Donner and Jensen Sec. 3; docs/profile-rendering.md). The material's
+// profiles are tabulated on the host (scene/profile_material.h); the frame
+// is texture-space passes (the irradiance entering each face, each texel's
+// world position and area, its normal) and the gather from the camera.
+//
+// Shapes: "slab", a square of side size_mm in the plane z = 0 facing +z,
+// its texture coordinates spanning it, as thick as the material (the
+// ground truth's flat slab: reference/profile_convolution.h).
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/input_error.h"
+#include "scene/profile_material.h"
+#include "scene/scene_kinds.h"
+#include "scene/uniform_values.h"
+
+namespace st {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr int kMaxTargetSize = 4096;
+
+// Vertex attributes of every profile program: position, normal, uv.
+struct Mesh {
+    VertexArray vertices;
+    std::vector<uint32_t> indices;
+    std::vector<glm::dvec3> corners;  // points that bound it, for the camera's near and far
+};
+
+Mesh slab_mesh(double size_mm) {
+    Mesh m;
+    m.vertices.attribute_count = 3;
+    const double h = 0.5 * size_mm;
+    const double c[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (const auto& k : c) {
+        m.vertices.data.push_back(glm::vec4(float(k[0] * h), float(k[1] * h), 0.0f, 1.0f));
+        m.vertices.data.push_back(glm::vec4(0.0f, 0.0f, 1.0f, 0.0f));
+        m.vertices.data.push_back(glm::vec4(0.5f * float(k[0] + 1.0), 0.5f * float(k[1] + 1.0), 0.0f, 1.0f));
+        m.corners.push_back(glm::dvec3(k[0] * h, k[1] * h, 0.0));
+    }
+    m.indices = {0, 1, 2, 0, 2, 3};
+    return m;
+}
+
+Texture target_texture(const std::string& sampler, const std::string& target) {
+    Texture t;
+    t.sampler = sampler;
+    t.target = target;
+    t.set_filter(TextureFilter::Linear);
+    t.set_wrap(TextureWrap::ClampToEdge);
+    return t;
+}
+
+Texture white_texture(const std::string& sampler) {
+    Texture t;
+    t.sampler = sampler;
+    t.format = TextureFormat::RGBA8;
+    t.width = t.height = 1;
+    t.texels8 = {255, 255, 255, 255};
+    return t;
+}
+
+// A pass drawing the mesh at its texture coordinates into `target`.
+Pass texture_space_pass(const std::string& target, int size, const Mesh& mesh, const std::string& fragment,
+                        std::vector<Uniform> uniforms, std::vector<Texture> textures) {
+    Pass pass;
+    pass.target = target;
+    pass.width = pass.height = size;
+    pass.format = TargetFormat::RGBA32F;
+    DrawCall d;
+    d.vertex = "texture_space";
+    d.fragment = fragment;
+    d.vertices = mesh.vertices;
+    d.indices = mesh.indices;
+    d.uniforms = std::move(uniforms);
+    d.textures = std::move(textures);
+    pass.draws.push_back(std::move(d));
+    return pass;
+}
+
+glm::vec3 unit3(JsonReader& r, const std::string& key) {
+    const std::vector<double> v = r.numbers(key, 3, 3, -1e6, 1e6);
+    const glm::dvec3 d(v[0], v[1], v[2]);
+    if (!(glm::length(d) > 1e-12)) throw InputError("field '" + r.field(key) + "' must not be the zero vector");
+    return glm::vec3(glm::normalize(d));
+}
+
+}  // namespace
+
+Frame build_profile_scene(JsonReader& scene, SceneSize size) {
+    JsonReader material_r = scene.object("material");
+    const ProfileMaterial material = read_profile_material(material_r);
+
+    JsonReader geometry_r = scene.object("geometry");
+    geometry_r.choice_or("shape", "slab", {"slab"});
+    const double size_mm = geometry_r.number_or("size_mm", 40.0, 1e-3, 1e5);
+    const int target_size = geometry_r.integer_or("texture_size", 256, 4, kMaxTargetSize);
+    geometry_r.finish();
+    const Mesh mesh = slab_mesh(size_mm);
+
+    JsonReader view_r = scene.object("view");
+    const double theta = view_r.number_or("angle_deg", 30.0, 0.0, 89.0) * kPi / 180.0;
+    const double phi = view_r.number_or("azimuth_deg", -90.0, -360.0, 360.0) * kPi / 180.0;
+    const double distance = view_r.number_or("distance_mm", 2.0 * size_mm, 1e-3, 1e6);
+    const double fov = view_r.number_or("fov_deg", 45.0, 1.0, 120.0) * kPi / 180.0;
+    view_r.finish();
+
+    // A directional light; its pattern (a spot, a shadow edge) as
+    // irradiance.frag describes it.
+    JsonReader light_r = scene.object("light");
+    const glm::vec3 light_direction = unit3(light_r, "direction");
+    const std::vector<double> e0 = light_r.numbers("irradiance", 1, 3, 0.0, 1e6);
+    const glm::vec3 irradiance = e0.size() == 3 ? glm::vec3(float(e0[0]), float(e0[1]), float(e0[2]))
+                                                : glm::vec3(float(e0[0]));
+    if (e0.size() == 2) throw InputError("field 'light.irradiance' needs one value or three (R, G, B)");
+    glm::vec4 spot(0.0f), edge(0.0f);
+    if (auto s = light_r.object_if("spot")) {
+        const std::vector<double> c = s->numbers("centre_mm", 2, 2, -1e6, 1e6);
+        spot = glm::vec4(float(c[0]), float(c[1]), float(s->number("radius_mm", 1e-6, 1e6)), 0.0f);
+        s->finish();
+    }
+    if (auto e = light_r.object_if("edge")) {
+        const std::vector<double> n = e->numbers("normal", 2, 2, -1e6, 1e6);
+        const double len = std::hypot(n[0], n[1]);
+        if (!(len > 1e-12)) throw InputError("field 'light.edge.normal' must not be the zero vector");
+        edge = glm::vec4(float(n[0] / len), float(n[1] / len), float(e->number("offset_mm", -1e6, 1e6)), 1.0f);
+        e->finish();
+    }
+    light_r.finish();
+
+    GatherSettings gather;
+    if (auto g = scene.object_if("gather")) {
+        gather.pattern = g->choice_or("pattern", gather.pattern, {"importance", "disk"});
+        gather.samples = g->integer_or("samples", gather.samples, 1, kMaxGatherSamples);
+        gather.table_size = g->integer_or("table_size", gather.table_size, 2, 65536);
+        gather.tail_fraction = g->number_or("tail_fraction", gather.tail_fraction, 1e-9, 0.5);
+        g->finish();
+    }
+    const std::shared_ptr<const BuiltProfiles> profiles = build_profiles(material, gather);
+
+    Frame frame;
+    auto target = [&](const std::string& name) {
+        frame.targets.push_back(RenderTarget{name, target_size, target_size, TargetFormat::RGBA32F, 1});
+    };
+    const bool thin = material.thin();
+    auto irradiance_pass = [&](const std::string& name, float back_offset) {
+        target(name);
+        frame.passes.push_back(texture_space_pass(
+            name, target_size, mesh, "irradiance",
+            {uniform("light_direction", light_direction), uniform("light_irradiance", irradiance),
+             uniform("eta", float(material.eta)), int_uniform("rough", material.roughness > 0 ? 1 : 0),
+             uniform("back_offset", back_offset), uniform("spot", spot), uniform("edge", edge)},
+            {profiles->rho_dt}));
+    };
+    irradiance_pass("irradiance", 0.0f);
+    if (thin) irradiance_pass("irradiance_back", float(material.thickness));
+    for (int channel = 0; channel < 2; ++channel) {
+        const std::string name = channel == 0 ? "position_area" : "surface_normal";
+        target(name);
+        frame.passes.push_back(
+            texture_space_pass(name, target_size, mesh, "surface", {int_uniform("channel", channel)}, {}));
+    }
+
+    // The camera: `distance_mm` from the slab's centre, `angle_deg` from its
+    // normal, `azimuth_deg` around it.
+    const glm::dvec3 eye =
+        distance * glm::dvec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+    const glm::dvec3 up = theta < 1e-6 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+    const glm::dvec3 forward = -glm::normalize(eye);
+    double nearest = 1e30, farthest = 0;
+    for (const glm::dvec3& c : mesh.corners) {
+        const double z = glm::dot(c - eye, forward);
+        nearest = std::min(nearest, z), farthest = std::max(farthest, z);
+    }
+    if (!(nearest > 1e-6 * distance))
+        throw InputError("field 'view.distance_mm': the camera is inside or beside the slab; move it further away");
+    const glm::mat4 view_proj =
+        glm::perspective(float(fov), float(size.width) / float(size.height), float(0.5 * nearest),
+                         float(2.0 * farthest)) *
+        glm::lookAt(glm::vec3(eye), glm::vec3(0.0f), glm::vec3(up));
+
+    DrawCall d;
+    d.vertex = "profile";
+    d.fragment = thin ? "gather_thin" : "gather";
+    d.vertices = mesh.vertices;
+    d.indices = mesh.indices;
+    d.textures = {target_texture("irradiance", "irradiance")};
+    if (thin) d.textures.push_back(target_texture("irradiance_back", "irradiance_back"));
+    d.textures.push_back(target_texture("position_area", "position_area"));
+    d.textures.push_back(target_texture("surface_normal", "surface_normal"));
+    d.textures.push_back(profiles->profile_R);
+    d.textures.push_back(profiles->profile_T);
+    d.textures.push_back(profiles->pattern);
+    d.textures.push_back(white_texture("albedo"));
+    d.uniforms = {uniform("view_proj", view_proj),
+                  int_uniform("samples", gather.samples),
+                  uniform("r_max", float(profiles->r_max)),
+                  uniform("profile_size", float(gather.table_size)),
+                  uniform("texel_uv", 1.0f / float(target_size))};
+    Pass pass;
+    pass.width = size.width;
+    pass.height = size.height;
+    pass.clear_colour = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    pass.draws.push_back(std::move(d));
+    frame.passes.push_back(std::move(pass));
+    return frame;
+}
+
+}  // namespace st
