@@ -115,7 +115,8 @@ const bool registered = [] {
     for (const auto& n : fragment_twin_names())
         benchmark::RegisterBenchmark(("BM_FragmentTwin/" + n).c_str(), BM_FragmentTwin, n);
     for (const auto& s : builtin_scene_names())
-        if ((s.rfind("thin-slab-", 0) == 0 && s.find("sweep") == std::string::npos) || s.rfind("relief-", 0) == 0)
+        if ((s.rfind("thin-slab-", 0) == 0 && s.find("sweep") == std::string::npos) || s.rfind("relief-", 0) == 0 ||
+            s.rfind("profile-", 0) == 0)
             for (int threads : {1, 2})
                 benchmark::RegisterBenchmark(("BM_CpuFrame/" + s + "/threads:" + std::to_string(threads)).c_str(),
                                              BM_CpuFrame, s, threads)

@@ -394,6 +394,45 @@ ST_INLINE Float gather(const float* base, Int index, Mask active) {
 #endif
 }
 
+// The 8 floats at base + offset[i] (offset in floats) for every lane i,
+// transposed: out[c] holds float c of every lane's eight. Two neighbouring
+// RGBA32F texels are one 32-byte load per lane instead of eight gathers;
+// the caller guarantees all eight floats are in bounds.
+ST_INLINE void load_rows8(const float* base, Int offset, Float (&out)[8]) {
+#if defined(ST_SIMD_AVX512)
+    alignas(64) int32_t at[16];
+    _mm512_store_si512(at, __m512i(offset.v));
+    // Row j of each 8x8 block: lane j in the low half, lane j + 8 in the high.
+    __m512 r[8];
+    for (int j = 0; j < 8; ++j)
+        r[j] = _mm512_insertf32x8(_mm512_castps256_ps512(_mm256_loadu_ps(base + at[j])),
+                                  _mm256_loadu_ps(base + at[j + 8]), 1);
+    __m512 t[8], u[8];
+    for (int j = 0; j < 4; ++j) {
+        t[2 * j] = _mm512_unpacklo_ps(r[2 * j], r[2 * j + 1]);
+        t[2 * j + 1] = _mm512_unpackhi_ps(r[2 * j], r[2 * j + 1]);
+    }
+    for (int h = 0; h < 2; ++h) {  // rows 0-3, then 4-7
+        const __m512 a0 = t[4 * h], a1 = t[4 * h + 1], b0 = t[4 * h + 2], b1 = t[4 * h + 3];
+        u[4 * h + 0] = _mm512_shuffle_ps(a0, b0, 0x44);
+        u[4 * h + 1] = _mm512_shuffle_ps(a0, b0, 0xee);
+        u[4 * h + 2] = _mm512_shuffle_ps(a1, b1, 0x44);
+        u[4 * h + 3] = _mm512_shuffle_ps(a1, b1, 0xee);
+    }
+    // u[c] (c < 4) holds float c of rows 0-3 in its 128-bit blocks 0 and 2
+    // and float c + 4 in blocks 1 and 3; u[c + 4] the same for rows 4-7.
+    const __m512i lo = _mm512_setr_epi32(0, 1, 2, 3, 16, 17, 18, 19, 8, 9, 10, 11, 24, 25, 26, 27);
+    const __m512i hi = _mm512_setr_epi32(4, 5, 6, 7, 20, 21, 22, 23, 12, 13, 14, 15, 28, 29, 30, 31);
+    for (int c = 0; c < 4; ++c) {
+        out[c] = Float(FloatV(_mm512_permutex2var_ps(u[c], lo, u[c + 4])));
+        out[c + 4] = Float(FloatV(_mm512_permutex2var_ps(u[c], hi, u[c + 4])));
+    }
+#else
+    for (int i = 0; i < kLanes; ++i)
+        for (int c = 0; c < 8; ++c) out[c].v[i] = base[offset.v[i] + c];
+#endif
+}
+
 // Lane i of the result is lane idx[i] of x: the quad shuffles behind dFdx.
 ST_INLINE Float shuffle(Float x, IntV idx) { return Float(__builtin_shuffle(x.v, idx)); }
 

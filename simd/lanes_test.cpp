@@ -169,4 +169,17 @@ TEST(Lanes, GathersReadOnlyActiveLanes) {
     }
 }
 
+// load_rows8 against the plain definition: every lane its own offset
+// (unaligned, repeated, the array's last eight floats), every float in place.
+TEST(Lanes, LoadRows8Transposes) {
+    std::vector<float> data(1000);
+    for (size_t i = 0; i < data.size(); ++i) data[i] = float(i) * 0.5f - 7.0f;
+    Int offset;
+    for (int i = 0; i < kLanes; ++i) offset.set(i, i == 3 ? 992 : (i * 37 + 5) % 900);
+    Float out[8];
+    load_rows8(data.data(), offset, out);
+    for (int i = 0; i < kLanes; ++i)
+        for (int c = 0; c < 8; ++c) EXPECT_EQ(out[c][i], data[size_t(offset[i] + c)]) << "lane " << i << " float " << c;
+}
+
 }  // namespace st::simd

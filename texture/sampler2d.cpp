@@ -140,7 +140,7 @@ Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
             texture.mag_filter == TextureFilter::Linear)
             build_alpha_quads();
     } else {
-        rgba32_.assign(texels * 4, 0.0f);
+        rgba32_.assign((texels + 1) * 4, 0.0f);  // + 1: the right tap of row_pair's last pair
         for (int l = 0; l <= last_level_; ++l) {
             const float* in = level_floats(l);
             float* out = &rgba32_[size_t(level_base_[size_t(l)]) * 4];
@@ -199,21 +199,27 @@ ST_INLINE Sampler2D::LevelLanes Sampler2D::level_lanes(Int level) const {
     return l;
 }
 
-ST_INLINE Vec4 Sampler2D::texel(const LevelLanes& level, Int x, Int y) const {
+ST_INLINE Vec4 Sampler2D::texel(const LevelLanes& level, Int x, Int y, unsigned read) const {
     // Taps are inside their level by construction (wrapped or clamped)
     // except the npot REPEAT taps of a NaN coordinate, whose weight is NaN
     // anyway: those read 0, never outside the texels.
     const Mask inside = !(x < Int(0)) && !(y < Int(0)) && x < level.width && y < level.height;
     return gather_texels(tex_->format == TextureFormat::RGBA8, rgba8_.data(), rgba32_.data(),
-                         level.base + y * level.width + x, inside);
+                         level.base + y * level.width + x, inside, read);
 }
 
 Vec4 Sampler2D::fetch(Int x, Int y, Int level) const {
     const Mask level_ok = !(level < Int(0)) && !(Int(last_level_) < level);
     const LevelLanes l = level_lanes(select(level_ok, level, Int(0)));
     const Mask inside = level_ok && !(x < Int(0)) && !(y < Int(0)) && x < l.width && y < l.height;
-    Vec4 r = gather_texels(tex_->format == TextureFormat::RGBA8, rgba8_.data(), rgba32_.data(),
-                           l.base + y * l.width + x, inside);
+    const Int index = l.base + y * l.width + x;
+    // Every lane reading one float texel (a table read in a loop, such as
+    // the gather's sample pattern): one load of it for all.
+    if (tex_->format != TextureFormat::RGBA8 && all(inside) && simd::reduce_min(index) == simd::reduce_max(index)) {
+        const float* t = rgba32_.data() + size_t(simd::reduce_min(index)) * 4;
+        return Vec4(Float(t[0]), Float(t[1]), Float(t[2]), Float(t[3]));
+    }
+    Vec4 r = gather_texels(tex_->format == TextureFormat::RGBA8, rgba8_.data(), rgba32_.data(), index, inside);
     if (tex_->format == TextureFormat::R32F) r.w = select(inside, r.w, Float(1.0f));  // the swizzle's 1
     return r;
 }
@@ -224,12 +230,38 @@ glm::vec4 Sampler2D::sample(const glm::vec2& st) const {
     return lane0(sample_lod(Vec2(Float(st.x), Float(st.y)), Float(0.0f)));
 }
 
+// Whether the bilinear taps of a float texture can be read as texel pairs:
+// every tap inside its level (not so only for the npot REPEAT taps of a NaN
+// coordinate).
+ST_INLINE bool Sampler2D::float_pairs(const LevelLanes& level, const texel::LinearTaps& u,
+                                      const texel::LinearTaps& v) const {
+    if (tex_->format == TextureFormat::RGBA8) return false;
+    const Mask inside = !(u.i0 < Int(0)) && u.i0 < level.width && !(u.i1 < Int(0)) && u.i1 < level.width &&
+                        !(v.i0 < Int(0)) && v.i0 < level.height && !(v.i1 < Int(0)) && v.i1 < level.height;
+    return all(inside);
+}
+
+// The two taps of row y, texels u.i0 and u.i1: one 8-float load per lane
+// where they are neighbours (rgba32_ has a spare texel at its end), a
+// gather for the lanes where the wrap or the clamp makes them otherwise.
+ST_INLINE void Sampler2D::row_pair(const LevelLanes& level, const texel::LinearTaps& u, Int y, unsigned read,
+                                   Vec4& left, Vec4& right) const {
+    const Int row = level.base + y * level.width;
+    Float f[8];
+    simd::load_rows8(rgba32_.data(), (row + u.i0) * Int(4), f);
+    left = Vec4(f[0], f[1], f[2], f[3]);
+    right = Vec4(f[4], f[5], f[6], f[7]);
+    const Mask apart = u.i1 != u.i0 + Int(1);
+    if (any(apart))
+        right = select(apart, gather_texels(false, nullptr, rgba32_.data(), row + u.i1, apart, read), right);
+}
+
 // The filter within one level, float SoA (§3.1).
 ST_INLINE Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter,
-                              Mask as_nearest) const {
+                              Mask as_nearest, unsigned read) const {
     if (filter == TextureFilter::Nearest)
         return texel(level, nearest_texel(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s, false),
-                     nearest_texel(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t, false));
+                     nearest_texel(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t, false), read);
     LinearTaps u = linear_taps_float(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s);
     LinearTaps v = linear_taps_float(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t);
     // Lanes that want NEAREST in a vector that filters linearly take the
@@ -240,8 +272,19 @@ ST_INLINE Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, 
         u.weight = snap(u.weight);
         v.weight = snap(v.weight);
     }
-    const Vec4 t00 = texel(level, u.i0, v.i0), t10 = texel(level, u.i1, v.i0);
-    const Vec4 t01 = texel(level, u.i0, v.i1), t11 = texel(level, u.i1, v.i1);
+    Vec4 t00, t10, t01, t11;
+    // A texture one texel high (a table) has both rows in row 0 under every
+    // wrap: the same taps, read once; the lerp between them stays.
+    const bool one_row = tex_->height == 1;
+    if (float_pairs(level, u, v)) {
+        row_pair(level, u, v.i0, read, t00, t10);
+        if (one_row) t01 = t00, t11 = t10;
+        else row_pair(level, u, v.i1, read, t01, t11);
+    } else {
+        t00 = texel(level, u.i0, v.i0, read), t10 = texel(level, u.i1, v.i0, read);
+        t01 = one_row ? t00 : texel(level, u.i0, v.i1, read);
+        t11 = one_row ? t10 : texel(level, u.i1, v.i1, read);
+    }
     auto bilinear = [&](Float a00, Float a10, Float a01, Float a11) {
         return lerp_float(v.weight, lerp_float(u.weight, a00, a10), lerp_float(u.weight, a01, a11));
     };
@@ -384,9 +427,9 @@ ST_INLINE bool Sampler2D::needs_lod() const {
 }
 
 // One level, one filter: no LOD at all, whatever the op (§1.1).
-ST_INLINE Vec4 Sampler2D::sample_base(const Vec2& st) const {
+ST_INLINE Vec4 Sampler2D::sample_base(const Vec2& st, unsigned read) const {
     const LevelLanes l0 = level_lanes(Int(0));
-    if (!aos_) return filter_float(st, l0, tex_->mag_filter, Mask(false));
+    if (!aos_) return filter_float(st, l0, tex_->mag_filter, Mask(false), read);
     Int rb, ga;
     filter_unorm8(st, l0, tex_->mag_filter, true, rb, ga);
     return unpack_pairs(rb, ga);
@@ -415,8 +458,8 @@ Vec4 Sampler2D::sample_bias(const Vec2& st, Float bias) const {
     return sample_levels(st, choose_levels(lod_.requested(half_fast_log2(quad_rho2(st)) + bias), mip_filter_, last_level_), false);
 }
 
-Vec4 Sampler2D::sample_lod(const Vec2& st, Float lod) const {
-    if (!needs_lod()) return sample_base(st);
+Vec4 Sampler2D::sample_lod(const Vec2& st, Float lod, unsigned read) const {
+    if (!needs_lod()) return sample_base(st, read);
     return sample_levels(st, choose_levels(lod_.requested(lod), mip_filter_, last_level_), false);
 }
 

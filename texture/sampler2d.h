@@ -29,8 +29,10 @@ public:
     // GLSL texture(sampler2D, vec2, float bias): the quad's LOD plus each
     // lane's bias.
     Vec4 sample_bias(const Vec2& st, Float bias) const;
-    // GLSL textureLod(sampler2D, vec2, float): one LOD per lane.
-    Vec4 sample_lod(const Vec2& st, Float lod) const;
+    // GLSL textureLod(sampler2D, vec2, float): one LOD per lane. `read`
+    // (texel::kReadRGB for .rgb) names the channels used; a float texture
+    // without mip selection may then skip the others (they read anything).
+    Vec4 sample_lod(const Vec2& st, Float lod, unsigned read = texel::kReadRGBA) const;
     // GLSL textureGrad(sampler2D, vec2, vec2 dPdx, vec2 dPdy): per lane.
     Vec4 sample_grad(const Vec2& st, const Vec2& dpdx, const Vec2& dpdy) const;
     // textureGrad's levels depend on the derivatives alone, not on the
@@ -72,18 +74,22 @@ private:
     using LevelChoice = texel::LevelChoice;
     LevelLanes level_lanes(Int level) const;
     bool needs_lod() const;
-    Vec4 sample_base(const Vec2& st) const;
+    Vec4 sample_base(const Vec2& st, unsigned read = texel::kReadRGBA) const;
     Float quad_rho2(const Vec2& st) const;
     Vec4 sample_levels(const Vec2& st, const LevelChoice& choice, bool per_quad_lod) const;
     Vec4 filter_levels(const Vec2& st, const LevelChoice& choice, TextureFilter filter, bool aos) const;
     Vec4 blend_second_level(const Vec2& st, const LevelChoice& choice, TextureFilter filter, Mask as_nearest,
                             Mask blend, const Vec4& c0) const;
-    Vec4 filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter, Mask as_nearest) const;
+    Vec4 filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter, Mask as_nearest,
+                      unsigned read = texel::kReadRGBA) const;
     Int texture_size(Int lod, bool x) const;
     template <bool kRedBlue = true>
     void filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, Int& rb,
                        Int& ga) const;
-    Vec4 texel(const LevelLanes& level, Int x, Int y) const;
+    Vec4 texel(const LevelLanes& level, Int x, Int y, unsigned read = texel::kReadRGBA) const;
+    bool float_pairs(const LevelLanes& level, const texel::LinearTaps& u, const texel::LinearTaps& v) const;
+    void row_pair(const LevelLanes& level, const texel::LinearTaps& u, Int y, unsigned read, Vec4& left,
+                  Vec4& right) const;
     void build_alpha_quads();
     Int alpha_bilinear(const Vec2& st, const LevelLanes& level) const;
 

@@ -187,14 +187,21 @@ ST_INLINE Float half_fast_log2(Float rho2) {
 // Texels at `index` where `active` (0 elsewhere, nothing read there): from
 // the packed RGBA8 array when the texture is RGBA8, else from the RGBA
 // float array, four floats a texel.
-ST_INLINE Vec4 gather_texels(bool rgba8, const int32_t* bytes, const float* floats, Int index, Mask active) {
+// `read` (bits 1, 2, 4, 8 for R, G, B, A) says which float channels the
+// caller uses; the others are not fetched and read 0 (as LLVM drops the
+// loads of channels a shader never reads). RGBA8 texels come whole.
+inline constexpr unsigned kReadRGBA = 0xf, kReadRGB = 0x7;
+ST_INLINE Vec4 gather_texels(bool rgba8, const int32_t* bytes, const float* floats, Int index, Mask active,
+                             unsigned read = kReadRGBA) {
     if (rgba8) {
         const Int rgba = simd::gather(bytes, index, active);
         return unpack_pairs(red_blue(rgba), green_alpha(rgba));
     }
     const Int i = index * Int(4);
-    return Vec4(simd::gather(floats, i, active), simd::gather(floats + 1, i, active),
-                simd::gather(floats + 2, i, active), simd::gather(floats + 3, i, active));
+    auto channel = [&](unsigned c) __attribute__((always_inline)) {
+        return (read >> c) & 1u ? simd::gather(floats + c, i, active) : Float(0.0f);
+    };
+    return Vec4(channel(0), channel(1), channel(2), channel(3));
 }
 
 // The two trilinear blends (§2.8). Float: fma(max(fpart, 0), C1 - C0, C0)
