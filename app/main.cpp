@@ -119,13 +119,15 @@ int main(int argc, char** argv) {
 
     std::string technique;
     int sweep_frames = 5;
+    std::string sweep_scene = "profile-slab-edge";
     auto* sweep = app.add_subcommand("sweep", "a technique's model along sweeps of its inputs (thin-slab: both "
-                                              "backends; relief: search settings, speed against accuracy, CPU)");
-    sweep->add_option("technique", technique, "thin-slab | relief")
+                                              "backends; relief and profile: settings, speed against accuracy, CPU)");
+    sweep->add_option("technique", technique, "thin-slab | relief | profile")
         ->required()
-        ->check(CLI::IsMember({"thin-slab", "relief"}));
+        ->check(CLI::IsMember({"thin-slab", "relief", "profile"}));
+    sweep->add_option("--scene", sweep_scene, "profile: the flat-slab scene measured against its exact image");
     sweep->add_option("--out", out_dir, "output folder (CSV, SVG charts, Markdown)");
-    sweep->add_option("--frames", sweep_frames, "relief: timed rounds per setting (medians)")->check(CLI::Range(1, 1000));
+    sweep->add_option("--frames", sweep_frames, "relief, profile: timed rounds per setting (medians)")->check(CLI::Range(1, 1000));
     add_common(sweep, common);
 
     int report_frames = 10;
@@ -164,8 +166,11 @@ int main(int argc, char** argv) {
         }
         if (*figures) return st::cmd_optics_figures(out_dir, figure_photons, figure_threads);
         if (*bench) return st::cmd_bench(scenes, frames, json, scaling, common);
-        if (*sweep) return technique == "relief" ? st::cmd_sweep_relief(out_dir, sweep_frames, common)
-                                             : st::cmd_sweep(technique, out_dir, common);
+        if (*sweep) {
+            if (technique == "relief") return st::cmd_sweep_relief(out_dir, sweep_frames, common);
+            if (technique == "profile") return st::cmd_sweep_profile(sweep_scene, out_dir, sweep_frames, common);
+            return st::cmd_sweep(technique, out_dir, common);
+        }
         std::cerr << "shadertwin: no command given (try --help)\n";
         return 2;
     } catch (const std::exception& e) {

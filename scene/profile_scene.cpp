@@ -14,7 +14,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/input_error.h"
-#include "scene/profile_material.h"
+#include "scene/profile_scene.h"
 #include "scene/scene_kinds.h"
 #include "scene/uniform_values.h"
 
@@ -92,57 +92,86 @@ glm::vec3 unit3(JsonReader& r, const std::string& key) {
 
 }  // namespace
 
-Frame build_profile_scene(JsonReader& scene, SceneSize size) {
+ProfileSceneSpec read_profile_scene(JsonReader& scene) {
+    ProfileSceneSpec spec;
     JsonReader material_r = scene.object("material");
-    const ProfileMaterial material = read_profile_material(material_r);
+    spec.material = read_profile_material(material_r);
 
     JsonReader geometry_r = scene.object("geometry");
-    geometry_r.choice_or("shape", "slab", {"slab"});
-    const double size_mm = geometry_r.number_or("size_mm", 40.0, 1e-3, 1e5);
-    const int target_size = geometry_r.integer_or("texture_size", 256, 4, kMaxTargetSize);
+    spec.shape = geometry_r.choice_or("shape", "slab", {"slab"});
+    spec.size_mm = geometry_r.number_or("size_mm", 40.0, 1e-3, 1e5);
+    spec.texture_size = geometry_r.integer_or("texture_size", 256, 4, kMaxTargetSize);
     geometry_r.finish();
-    const Mesh mesh = slab_mesh(size_mm);
 
     JsonReader view_r = scene.object("view");
-    const double theta = view_r.number_or("angle_deg", 30.0, 0.0, 89.0) * kPi / 180.0;
-    const double phi = view_r.number_or("azimuth_deg", -90.0, -360.0, 360.0) * kPi / 180.0;
-    const double distance = view_r.number_or("distance_mm", 2.0 * size_mm, 1e-3, 1e6);
-    const double fov = view_r.number_or("fov_deg", 45.0, 1.0, 120.0) * kPi / 180.0;
+    spec.view_angle = view_r.number_or("angle_deg", 30.0, 0.0, 89.0) * kPi / 180.0;
+    spec.view_azimuth = view_r.number_or("azimuth_deg", -90.0, -360.0, 360.0) * kPi / 180.0;
+    spec.view_distance = view_r.number_or("distance_mm", 2.0 * spec.size_mm, 1e-3, 1e6);
+    spec.fov = view_r.number_or("fov_deg", 45.0, 1.0, 120.0) * kPi / 180.0;
     view_r.finish();
 
     // A directional light; its pattern (a spot, a shadow edge) as
     // irradiance.frag describes it.
     JsonReader light_r = scene.object("light");
-    const glm::vec3 light_direction = unit3(light_r, "direction");
+    spec.light_direction = unit3(light_r, "direction");
     const std::vector<double> e0 = light_r.numbers("irradiance", 1, 3, 0.0, 1e6);
-    const glm::vec3 irradiance = e0.size() == 3 ? glm::vec3(float(e0[0]), float(e0[1]), float(e0[2]))
-                                                : glm::vec3(float(e0[0]));
     if (e0.size() == 2) throw InputError("field 'light.irradiance' needs one value or three (R, G, B)");
-    glm::vec4 spot(0.0f), edge(0.0f);
-    if (auto s = light_r.object_if("spot")) {
-        const std::vector<double> c = s->numbers("centre_mm", 2, 2, -1e6, 1e6);
-        spot = glm::vec4(float(c[0]), float(c[1]), float(s->number("radius_mm", 1e-6, 1e6)), 0.0f);
-        s->finish();
+    spec.irradiance = e0.size() == 3 ? glm::vec3(float(e0[0]), float(e0[1]), float(e0[2])) : glm::vec3(float(e0[0]));
+    if (auto sp = light_r.object_if("spot")) {
+        const std::vector<double> c = sp->numbers("centre_mm", 2, 2, -1e6, 1e6);
+        spec.spot = glm::vec4(float(c[0]), float(c[1]), float(sp->number("radius_mm", 1e-6, 1e6)), 0.0f);
+        sp->finish();
     }
     if (auto e = light_r.object_if("edge")) {
         const std::vector<double> n = e->numbers("normal", 2, 2, -1e6, 1e6);
         const double len = std::hypot(n[0], n[1]);
         if (!(len > 1e-12)) throw InputError("field 'light.edge.normal' must not be the zero vector");
-        edge = glm::vec4(float(n[0] / len), float(n[1] / len), float(e->number("offset_mm", -1e6, 1e6)), 1.0f);
+        spec.edge = glm::vec4(float(n[0] / len), float(n[1] / len), float(e->number("offset_mm", -1e6, 1e6)), 1.0f);
         e->finish();
     }
     light_r.finish();
 
-    GatherSettings gather;
     if (auto g = scene.object_if("gather")) {
+        GatherSettings& gather = spec.gather;
         gather.pattern = g->choice_or("pattern", gather.pattern, {"importance", "disk"});
         gather.samples = g->integer_or("samples", gather.samples, 1, kMaxGatherSamples);
         gather.table_size = g->integer_or("table_size", gather.table_size, 2, 65536);
         gather.tail_fraction = g->number_or("tail_fraction", gather.tail_fraction, 1e-9, 0.5);
         g->finish();
     }
-    const std::shared_ptr<const BuiltProfiles> profiles = build_profiles(material, gather);
+    return spec;
+}
 
+glm::mat4 profile_view_proj(const ProfileSceneSpec& spec, SceneSize size) {
+    const Mesh mesh = slab_mesh(spec.size_mm);
+    const double theta = spec.view_angle, phi = spec.view_azimuth, distance = spec.view_distance;
+    // The camera: `distance_mm` from the slab's centre, `angle_deg` from its
+    // normal, `azimuth_deg` around it.
+    const glm::dvec3 eye =
+        distance * glm::dvec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+    const glm::dvec3 up = theta < 1e-6 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+    const glm::dvec3 forward = -glm::normalize(eye);
+    double nearest = 1e30, farthest = 0;
+    for (const glm::dvec3& c : mesh.corners) {
+        const double z = glm::dot(c - eye, forward);
+        nearest = std::min(nearest, z), farthest = std::max(farthest, z);
+    }
+    if (!(nearest > 1e-6 * distance))
+        throw InputError("field 'view.distance_mm': the camera is inside or beside the slab; move it further away");
+    return glm::perspective(float(spec.fov), float(size.width) / float(size.height), float(0.5 * nearest),
+                            float(2.0 * farthest)) *
+           glm::lookAt(glm::vec3(eye), glm::vec3(0.0f), glm::vec3(up));
+}
+
+Frame build_profile_scene(JsonReader& scene, SceneSize size) {
+    const ProfileSceneSpec spec = read_profile_scene(scene);
+    const ProfileMaterial& material = spec.material;
+    const GatherSettings& gather = spec.gather;
+    const int target_size = spec.texture_size;
+    const Mesh mesh = slab_mesh(spec.size_mm);
+    const glm::vec3 light_direction = spec.light_direction, irradiance = spec.irradiance;
+    const glm::vec4 spot = spec.spot, edge = spec.edge;
+    const std::shared_ptr<const BuiltProfiles> profiles = build_profiles(material, gather);
     Frame frame;
     auto target = [&](const std::string& name) {
         frame.targets.push_back(RenderTarget{name, target_size, target_size, TargetFormat::RGBA32F, 1});
@@ -166,23 +195,7 @@ Frame build_profile_scene(JsonReader& scene, SceneSize size) {
             texture_space_pass(name, target_size, mesh, "surface", {int_uniform("channel", channel)}, {}));
     }
 
-    // The camera: `distance_mm` from the slab's centre, `angle_deg` from its
-    // normal, `azimuth_deg` around it.
-    const glm::dvec3 eye =
-        distance * glm::dvec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
-    const glm::dvec3 up = theta < 1e-6 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
-    const glm::dvec3 forward = -glm::normalize(eye);
-    double nearest = 1e30, farthest = 0;
-    for (const glm::dvec3& c : mesh.corners) {
-        const double z = glm::dot(c - eye, forward);
-        nearest = std::min(nearest, z), farthest = std::max(farthest, z);
-    }
-    if (!(nearest > 1e-6 * distance))
-        throw InputError("field 'view.distance_mm': the camera is inside or beside the slab; move it further away");
-    const glm::mat4 view_proj =
-        glm::perspective(float(fov), float(size.width) / float(size.height), float(0.5 * nearest),
-                         float(2.0 * farthest)) *
-        glm::lookAt(glm::vec3(eye), glm::vec3(0.0f), glm::vec3(up));
+    const glm::mat4 view_proj = profile_view_proj(spec, size);
 
     DrawCall d;
     d.vertex = "profile";

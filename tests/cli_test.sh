@@ -308,6 +308,25 @@ PY
     agree relief-two-layer grazing --set view.angle_deg=84 --set view.horizon_distance=12
     ;;
 
+  sweep_profile)
+    # The gather against the exact convolution at a small size: every
+    # setting, the importance-sampled pattern converging on the exact image,
+    # the uniform disk over the profile's reach missing its narrow peak.
+    "$bin" sweep profile --frames 1 --set width=160 --set height=120 --out "$work/sweep" >"$work/sweep.md" ||
+      fail "sweep profile failed"
+    [ "$(wc -l <"$work/sweep/profile-sweep.csv")" -eq 55 ] || fail "sweep profile: expected 54 settings"
+    [ -s "$work/sweep/profile-sweep.svg" ] && [ -s "$work/sweep/profile-sweep-exact.png" ] || fail "sweep profile: no chart or image"
+    python3 - "$work/sweep/profile-sweep.csv" <<'PY' || fail "sweep profile: the gather does not converge on the exact image"
+import csv, sys
+rows = {(r["pattern"], r["samples"], r["texture_size"]): r for r in csv.DictReader(open(sys.argv[1]))}
+rms = lambda p, n, t: float(rows[(p, str(n), str(t))]["interior_rms_8bit"])
+assert rms("importance", 512, 512) < rms("importance", 64, 512) < rms("importance", 8, 512), "importance"
+assert rms("importance", 512, 512) < 0.6, rms("importance", 512, 512)
+assert rms("disk", 64, 256) > 5 * rms("importance", 64, 256), "disk undersampling not seen"
+assert any(r["undominated"] == "1" for r in rows.values())
+print("importance 8 -> 512:", rms("importance", 8, 512), "->", rms("importance", 512, 512), "; disk 64:", rms("disk", 64, 256))
+PY
+    ;;
   sweep_relief)
     # The step count scaled by the view angle is the same program on both
     # pipelines, and it changes the image.
