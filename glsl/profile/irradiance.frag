@@ -9,7 +9,8 @@
 // profile. The pattern is the ground truth's sharp-edged light, a spot and a
 // shadow edge on the plane of x and y (reference/profile_convolution.h):
 // where either is given, only points inside the spot or beyond the edge are
-// lit. Alpha 1 marks texels the mesh covers.
+// lit, each texel by the share of its footprint that is. Alpha 1 marks
+// texels the mesh covers.
 // Twin: kernels/profile/irradiance_frag.cpp.
 #include "profile_optics.glsl"
 layout(location = 0) in vec4 v_position;
@@ -24,12 +25,21 @@ uniform float back_offset;     // 0: this face; the thickness: the other one
 uniform vec4 spot;             // xy centre (mm), z radius; z <= 0: no spot
 uniform vec4 edge;             // lit where dot(p.xy, edge.xy) > edge.z; w <= 0: no edge
 
+// The lit share of a texel across the pattern's boundary, s the signed
+// distance from it (> 0 lit): a box filter as wide as the texel's footprint
+// across the boundary (|ds/dx| + |ds/dy| of a linear s), so that bilinear
+// reads of the target put the edge where it is between texel centres, not
+// at the nearest one.
+float coverage(float s) {
+    float w = max(fwidth(s), 1e-30);
+    return min(max(s / w + 0.5, 0.0), 1.0);
+}
+
 float light_pattern(vec2 p) {
-    vec2 d = p - spot.xy;
-    bool in_spot = spot.z > 0.0 && dot(d, d) < spot.z * spot.z;
-    bool beyond_edge = edge.w > 0.0 && dot(p, edge.xy) > edge.z;
+    float in_spot = spot.z > 0.0 ? coverage(spot.z - length(p - spot.xy)) : 0.0;
+    float beyond_edge = edge.w > 0.0 ? coverage(dot(p, edge.xy) - edge.z) : 0.0;
     bool patterned = spot.z > 0.0 || edge.w > 0.0;
-    return (!patterned || in_spot || beyond_edge) ? 1.0 : 0.0;
+    return patterned ? max(in_spot, beyond_edge) : 1.0;
 }
 
 void main() {

@@ -2,6 +2,7 @@
 #include "kernels/profile/profile.h"
 
 #include "kernels/profile/profile_optics.h"
+#include "shading/derivatives.h"
 #include "shading/glsl_math.h"
 #include "texture/sampler2d.h"
 
@@ -24,12 +25,19 @@ void IrradianceFragment::bind(const Bindings& b) {
 
 uint32_t IrradianceFragment::inputs_read() const { return reads(v_position, "xyz") | reads(v_normal, "xyz"); }
 
+Float IrradianceFragment::coverage(Float s) const {
+    const Float w = glsl::max(fwidth(s), Float(1e-30f));
+    return glsl::min(glsl::max(s / w + Float(0.5f), Float(0.0f)), Float(1.0f));
+}
+
 Float IrradianceFragment::light_pattern(const Vec2& p) const {
     const Vec2 d = p - Vec2(glm::vec2(spot_));
-    const Mask in_spot = Mask(spot_.z > 0.0f) && glsl::dot(d, d) < Float(spot_.z * spot_.z);
-    const Mask beyond_edge = Mask(edge_.w > 0.0f) && glsl::dot(p, Vec2(glm::vec2(edge_))) > Float(edge_.z);
+    const Float in_spot =
+        spot_.z > 0.0f ? coverage(Float(spot_.z) - simd::sqrt(glsl::dot(d, d))) : Float(0.0f);
+    const Float beyond_edge =
+        edge_.w > 0.0f ? coverage(glsl::dot(p, Vec2(glm::vec2(edge_))) - Float(edge_.z)) : Float(0.0f);
     const bool patterned = spot_.z > 0.0f || edge_.w > 0.0f;
-    return glsl::select(Mask(!patterned) || in_spot || beyond_edge, Float(1.0f), Float(0.0f));
+    return patterned ? glsl::max(in_spot, beyond_edge) : Float(1.0f);
 }
 
 Vec4 IrradianceFragment::main(const Fragment& frag) const {

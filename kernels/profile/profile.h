@@ -37,6 +37,7 @@ public:
     Vec4 main(const Fragment& frag) const;
 
 private:
+    Float coverage(Float s) const;
     Float light_pattern(const Vec2& p) const;
     glm::vec3 light_direction_{0.0f}, light_irradiance_{0.0f};
     float eta_ = 1.0f, back_offset_ = 0.0f;
