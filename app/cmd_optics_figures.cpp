@@ -13,7 +13,7 @@
 #include <sstream>
 
 #include "app/commands.h"
-#include "app/layer_file.h"
+#include "scene/layer_file.h"
 #include "app/svg_chart.h"
 #include "image/image_io.h"
 #include "optics/layered.h"

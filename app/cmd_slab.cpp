@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
-#include "app/layer_file.h"
+#include "scene/layer_file.h"
 #include "app/profile_table.h"
 #include "optics/diffuse_fresnel.h"
 #include "optics/layered.h"

@@ -60,10 +60,10 @@ ProfileExact exact_profile_image(const Scene& scene) {
     // The light entering each face: cos theta times the boundary's
     // transmittance, as irradiance.frag computes it.
     const glm::dvec3 l = glm::normalize(glm::dvec3(spec.light_direction));
-    const double eta = spec.material.eta;
+    const double eta = spec.material.eta();
     auto entering = [&](double c) {
         if (!(c > 0)) return 0.0;
-        if (spec.material.roughness > 0) return c * optics::RoughSurface(spec.material.roughness, eta).rho_dt(c);
+        if (spec.material.roughness() > 0) return c * optics::RoughSurface(spec.material.roughness(), eta).rho_dt(c);
         return c * (1.0 - optics::fresnel_dielectric(c, eta));
     };
     const double front = entering(l.z), back = spec.material.thin() ? entering(-l.z) : 0.0;

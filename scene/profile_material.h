@@ -2,9 +2,12 @@
 // its passes read (Donner and Jensen Sec. 3): the R(r) and T(r) tables per
 // channel (optics/profile_table.h), the sample pattern of the gather
 // (optics/radial_sampler.h), the boundary's rho_dt table of a rough
-// surface (Eq. 26). Profiles are built once per material and kept for the
-// process, keyed by everything they depend on; the build time is kept with
-// them, apart from any frame's time.
+// surface (Eq. 26). Profiles come from the optics the `slab` and `profile`
+// commands use: the dipole and the multipole of one slab, the layered
+// stack combined in frequency space, or Monte Carlo photon tracing. They are
+// built once per material and process (and the slow ones, layered and
+// Monte Carlo, kept on disk between processes: profile_cache.h), with the
+// build time kept apart from any frame's.
 #pragma once
 
 #include <array>
@@ -14,16 +17,21 @@
 #include <vector>
 
 #include "frame/frame.h"
+#include "optics/layered.h"
 #include "scene/json_reader.h"
 
 namespace st {
 
 struct ProfileMaterial {
-    std::string model;   // "dipole", "multipole"
-    std::array<double, 3> sigma_a{}, sigma_s{};  // per mm, R G B
-    double g = 0, eta = 1.3, thickness = 0;      // thickness 0: semi-infinite
-    double roughness = 0;                        // RMS slope; 0: smooth
-    bool thin() const { return thickness > 0; }
+    std::string model;                       // "dipole", "multipole", "layered", "mc"
+    std::vector<optics::LayerSpec> layers;   // top first; one for a single slab
+    long long photons = 200000;              // mc, per channel
+    uint64_t seed = 1;                       // mc
+    double mc_r_max = 20;                    // mm, mc: the radial bins' reach
+    bool thin() const;  // the last layer is finite: light crosses to the other face
+    double eta() const { return layers.front().eta; }          // of the top boundary
+    double roughness() const { return layers.front().roughness; }
+    double thickness() const;                                  // mm, all layers; infinite unless thin
 };
 
 // Reads the scene's "material" object; InputError names a bad field.
@@ -44,13 +52,22 @@ struct BuiltProfiles {
     Texture rho_dt;                // RGBA32F n x 1, rho_dt at cos (i + 0.5) / n (1x1 of 1 when smooth)
     double r_max = 0;              // mm, the tables' last radius and the pattern's reach
     std::array<double, 3> total_R{}, total_T{};  // the profiles' integrals over the plane
-    int dipoles = 0;               // per channel, most over the channels
-    double build_ms = 0;           // wall time of the first build (0 when the cache had it)
+    int dipoles = 0;               // per channel, most over the channels and layers
+    // Wall time of building the profiles in this process (0 when an earlier
+    // scene had built them) and where they came from: "built", "disk"
+    // (profile_cache.h) or "memory".
+    double build_ms = 0;
+    std::string source;
     // The profiles themselves, per mm^2 in double (channel R, G, B), for
     // the ground truth and the tables' own error.
     std::array<std::function<double(double)>, 3> R, T;
 };
 
 std::shared_ptr<const BuiltProfiles> build_profiles(const ProfileMaterial& m, const GatherSettings& g);
+
+// Every build_profiles call of this process so far, for the tools that
+// report build time apart from frame time: a line naming the material's
+// model, its source and its time.
+std::vector<std::string> profile_build_log();
 
 }  // namespace st

@@ -182,12 +182,12 @@ Frame build_profile_scene(JsonReader& scene, SceneSize size) {
         frame.passes.push_back(texture_space_pass(
             name, target_size, mesh, "irradiance",
             {uniform("light_direction", light_direction), uniform("light_irradiance", irradiance),
-             uniform("eta", float(material.eta)), int_uniform("rough", material.roughness > 0 ? 1 : 0),
+             uniform("eta", float(material.eta())), int_uniform("rough", material.roughness() > 0 ? 1 : 0),
              uniform("back_offset", back_offset), uniform("spot", spot), uniform("edge", edge)},
             {profiles->rho_dt}));
     };
     irradiance_pass("irradiance", 0.0f);
-    if (thin) irradiance_pass("irradiance_back", float(material.thickness));
+    if (thin) irradiance_pass("irradiance_back", float(material.thickness()));
     for (int channel = 0; channel < 2; ++channel) {
         const std::string name = channel == 0 ? "position_area" : "surface_normal";
         target(name);

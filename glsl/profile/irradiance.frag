@@ -37,7 +37,8 @@ float coverage(float s) {
 
 float light_pattern(vec2 p) {
     float in_spot = spot.z > 0.0 ? coverage(spot.z - length(p - spot.xy)) : 0.0;
-    float beyond_edge = edge.w > 0.0 ? coverage(dot(p, edge.xy) - edge.z) : 0.0;
+    // dot(p, edge.xy) - edge.z as NIR reassociates it (docs/llvmpipe/nir-algebraic.md).
+    float beyond_edge = edge.w > 0.0 ? coverage(p.x * edge.x + (p.y * edge.y - edge.z)) : 0.0;
     bool patterned = spot.z > 0.0 || edge.w > 0.0;
     return patterned ? max(in_spot, beyond_edge) : 1.0;
 }

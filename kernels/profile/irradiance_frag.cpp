@@ -35,7 +35,7 @@ Float IrradianceFragment::light_pattern(const Vec2& p) const {
     const Float in_spot =
         spot_.z > 0.0f ? coverage(Float(spot_.z) - simd::sqrt(glsl::dot(d, d))) : Float(0.0f);
     const Float beyond_edge =
-        edge_.w > 0.0f ? coverage(glsl::dot(p, Vec2(glm::vec2(edge_))) - Float(edge_.z)) : Float(0.0f);
+        edge_.w > 0.0f ? coverage(p.x * Float(edge_.x) + (p.y * Float(edge_.y) - Float(edge_.z))) : Float(0.0f);
     const bool patterned = spot_.z > 0.0f || edge_.w > 0.0f;
     return patterned ? glsl::max(in_spot, beyond_edge) : Float(1.0f);
 }

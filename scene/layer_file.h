@@ -1,11 +1,13 @@
-// layer_file.h: a layer stack file for `slab --layers` and `profile
-// --layers`: a JSON list, top layer first, each with sigma_a and sigma_s
+// layer_file.h: a layer stack file for `slab --layers`, `profile --layers`
+// and a profile scene's material: a JSON list, top layer first, each with sigma_a and sigma_s
 // (three values, per mm), g, eta (relative to the medium above), thickness
 // (mm, or "inf" for the last layer) and optional roughness (docs/optics.md).
 #pragma once
 
 #include <string>
 #include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "optics/layered.h"
 
@@ -20,5 +22,8 @@ constexpr double kThicknessMin = 1e-12, kThicknessMax = 1e9;  // mm
 
 // Throws InputError with one line naming the file and the field.
 std::vector<optics::LayerSpec> read_layer_file(const std::string& path);
+// The same for a list already parsed (a scene's inline layers); `where`
+// opens each message.
+std::vector<optics::LayerSpec> parse_layers(const nlohmann::json& list, const std::string& where);
 
 }  // namespace st

@@ -1,5 +1,5 @@
 // layer_file.cpp: see layer_file.h.
-#include "app/layer_file.h"
+#include "scene/layer_file.h"
 
 #include <cmath>
 #include <fstream>
@@ -16,6 +16,10 @@ std::vector<optics::LayerSpec> read_layer_file(const std::string& path) {
     if (!in) throw InputError("cannot read layers file " + path);
     const nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
     if (doc.is_discarded()) throw InputError(path + ": malformed JSON");
+    return parse_layers(doc, path);
+}
+
+std::vector<optics::LayerSpec> parse_layers(const nlohmann::json& doc, const std::string& path) {
     if (!doc.is_array() || doc.empty()) throw InputError(path + ": expected a non-empty JSON list of layers");
     if (doc.size() > 64) throw InputError(path + ": at most 64 layers");
     std::vector<optics::LayerSpec> layers;
