@@ -1,5 +1,7 @@
 // cmd_bench.cpp: `bench`, frames per second on both backends (app/bench.h
 // says how a frame is measured).
+#include "app/pass_times.h"
+#include "scene/profile_material.h"
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -11,7 +13,7 @@
 
 namespace st {
 
-int cmd_bench(const std::vector<std::string>& names, int frames, bool json, bool scaling,
+int cmd_bench(const std::vector<std::string>& names, int frames, bool json, bool scaling, bool per_pass,
               const CommonOptions& common) {
     std::vector<Scene> scenes;
     for (const auto& n : names) scenes.push_back(load_scene(n, common.overrides));
@@ -41,11 +43,17 @@ int cmd_bench(const std::vector<std::string>& names, int frames, bool json, bool
                     r.cpu_stages.setup_ms, r.cpu_stages.raster_ms, r.cpu_stages.fragment_ms, r.cpu_stages.output_ms);
         if (scaling) std::printf(" | %11.3f %8.2f", r.cpu_one_thread.ms_median, r.scaling());
         std::printf("\n");
+        if (per_pass && scenes[i].frame.passes.size() > 1)
+            for (const PassTime& p : measure_pass_times(backends, scenes[i].frame, frames))
+                std::printf("  pass %-23s cpu %8.3f ms  gl %8.3f ms  cpu/gl fps %5.2f\n", p.name.c_str(), p.cpu_ms,
+                            p.gl_ms, p.cpu_ms > 0 ? p.gl_ms / p.cpu_ms : 0.0);
         std::fflush(stdout);
     }
     if (!json)
         std::printf("frames %d per backend (medians), cpu threads %d, LP_NUM_THREADS %s\n", frames, common.threads,
                     std::getenv("LP_NUM_THREADS") ? std::getenv("LP_NUM_THREADS") : "unset");
+    if (per_pass && !json)
+        for (const std::string& line : profile_build_log()) std::printf("profile build (not in any frame): %s\n", line.c_str());
     return 0;
 }
 

@@ -23,7 +23,7 @@ int cmd_diff(const std::string& a, const std::string& b, const std::string& out_
 int cmd_golden(const std::string& action, const std::vector<std::string>& scenes,
                const CommonOptions& common);
 int cmd_report(const std::string& out_dir, int frames, const CommonOptions& common);
-int cmd_bench(const std::vector<std::string>& scenes, int frames, bool json, bool scaling,
+int cmd_bench(const std::vector<std::string>& scenes, int frames, bool json, bool scaling, bool per_pass,
               const CommonOptions& common);
 int cmd_optics_figures(const std::string& out_dir, long long photons, int threads);
 int cmd_sweep(const std::string& technique, const std::string& out_dir, const CommonOptions& common);

@@ -62,9 +62,12 @@ int main(int argc, char** argv) {
     bench->add_option("scenes", scenes, "built-in scene names or .json paths")->required();
     bench->add_option("--frames", frames, "measured frames per backend (after warm-up)")->check(CLI::Range(1, 100000));
     bench->add_flag("--json", json, "one JSON object per scene and backend");
-    bool scaling = false;
+    bool scaling = false, per_pass = false;
     bench->add_flag("--scaling", scaling,
                     "also run the CPU side on one thread, interleaved, and report the 1 -> N thread scaling");
+    bench->add_flag("--passes", per_pass,
+                    "also time each pass on both backends (the frame cut after each, interleaved) and list the "
+                    "profiles' build times apart");
     add_common(bench, common);
 
     st::SlabOptions slab_options;
@@ -165,7 +168,7 @@ int main(int argc, char** argv) {
             return st::cmd_profile(slab_options, profile_out, r_max, samples);
         }
         if (*figures) return st::cmd_optics_figures(out_dir, figure_photons, figure_threads);
-        if (*bench) return st::cmd_bench(scenes, frames, json, scaling, common);
+        if (*bench) return st::cmd_bench(scenes, frames, json, scaling, per_pass, common);
         if (*sweep) {
             if (technique == "relief") return st::cmd_sweep_relief(out_dir, sweep_frames, common);
             if (technique == "profile") return st::cmd_sweep_profile(sweep_scene, out_dir, sweep_frames, common);

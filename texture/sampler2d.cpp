@@ -236,6 +236,12 @@ glm::vec4 Sampler2D::sample(const glm::vec2& st) const {
 ST_INLINE bool Sampler2D::float_pairs(const LevelLanes& level, const texel::LinearTaps& u,
                                       const texel::LinearTaps& v) const {
     if (tex_->format == TextureFormat::RGBA8) return false;
+    // CLAMP_TO_EDGE (a NaN coordinate clamps to the last texel) and pot
+    // REPEAT (taps masked by size - 1) keep every tap inside by construction.
+    auto always_inside = [](TextureWrap w, bool pot) {
+        return w == TextureWrap::ClampToEdge || (w == TextureWrap::Repeat && pot);
+    };
+    if (always_inside(tex_->wrap_s, pot_w_) && always_inside(tex_->wrap_t, pot_h_)) return true;
     const Mask inside = !(u.i0 < Int(0)) && u.i0 < level.width && !(u.i1 < Int(0)) && u.i1 < level.width &&
                         !(v.i0 < Int(0)) && v.i0 < level.height && !(v.i1 < Int(0)) && v.i1 < level.height;
     return all(inside);
