@@ -110,6 +110,15 @@ for line in sys.stdin:
     expect_bad_input "mistyped field" "$bin" render triangles-basic --set width='"wide"'
     expect_bad_input "NaN value" "$bin" render triangles-basic --set width=NaN
     expect_bad_input "out-of-range depth" "$bin" render triangles-basic --set triangles.0.positions.0=[1,2,7]
+    # Diffusion-profile scenes: the sample count, the table, the material's layers.
+    expect_bad_input "profile: no samples" "$bin" render profile-parchment-multipole --set gather.samples=0
+    expect_bad_input "profile: too many samples" "$bin" render profile-parchment-multipole --set gather.samples=5000
+    expect_bad_input "profile: a one-entry table" "$bin" render profile-parchment-multipole --set gather.table_size=1
+    expect_bad_input "profile: a bad layer" "$bin" render profile-parchment-multipole \
+      --set 'material.layers=[{"sigma_a":[1,1],"sigma_s":[1,1,1],"g":0,"eta":1.3,"thickness":1}]'
+    expect_bad_input "profile: a stack for the multipole" "$bin" render profile-parchment-multipole \
+      --set 'material.layers=[{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1.3,"thickness":1},{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":1}]'
+    expect_bad_input "profile: a missing layers file" "$bin" render profile-parchment-multipole --set material.layers_file=/no/such.json
     expect_bad_input "zero resolution" "$bin" render triangles-basic --set width=0
     expect_bad_input "absurd resolution" "$bin" render triangles-basic --set height=100000
     expect_bad_input "threads 0" "$bin" render triangles-basic --threads 0
