@@ -47,7 +47,7 @@ ProfileExact exact_profile_image(const Scene& scene) {
     if (scene.kind != "profile") throw InputError("scene '" + scene.name + "' is not a profile scene");
     JsonReader r(scene.document, "");
     const ProfileSceneSpec spec = read_profile_scene(r);
-    if (spec.shape != "slab") throw InputError("the exact image needs the flat slab (geometry.shape \"slab\")");
+    if (spec.shape.kind != "slab") throw InputError("the exact image needs the flat slab (geometry.shape \"slab\")");
     const int width = scene.frame.passes.back().width, height = scene.frame.passes.back().height;
     const auto profiles = build_profiles(spec.material, spec.gather);
     const double reach = profiles->r_max;
@@ -119,7 +119,7 @@ ProfileExact exact_profile_image(const Scene& scene) {
     const glm::dmat4 inverse = glm::inverse(glm::dmat4(profile_view_proj(spec, SceneSize{width, height})));
     out.image = Image(width, height);
     out.region.assign(size_t(width) * size_t(height), 0);
-    const double half_size = 0.5 * spec.size_mm;
+    const double half_size = 0.5 * spec.shape.size_mm;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const double nx = (x + 0.5) / width * 2.0 - 1.0, ny = 1.0 - (y + 0.5) / height * 2.0;

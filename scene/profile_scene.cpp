@@ -4,9 +4,10 @@
 // is texture-space passes (the irradiance entering each face, each texel's
 // world position and area, its normal) and the gather from the camera.
 //
-// Shapes: "slab", a square of side size_mm in the plane z = 0 facing +z,
-// its texture coordinates spanning it, as thick as the material (the
-// ground truth's flat slab: reference/profile_convolution.h).
+// The shapes and their texture layouts: scene/profile_shape.h. Curved
+// shapes draw the gather with the depth test (a closed ellipsoid's far
+// side, a sheet bent past a half turn).
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -24,28 +25,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr int kMaxTargetSize = 4096;
-
-// Vertex attributes of every profile program: position, normal, uv.
-struct Mesh {
-    VertexArray vertices;
-    std::vector<uint32_t> indices;
-    std::vector<glm::dvec3> corners;  // points that bound it, for the camera's near and far
-};
-
-Mesh slab_mesh(double size_mm) {
-    Mesh m;
-    m.vertices.attribute_count = 3;
-    const double h = 0.5 * size_mm;
-    const double c[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
-    for (const auto& k : c) {
-        m.vertices.data.push_back(glm::vec4(float(k[0] * h), float(k[1] * h), 0.0f, 1.0f));
-        m.vertices.data.push_back(glm::vec4(0.0f, 0.0f, 1.0f, 0.0f));
-        m.vertices.data.push_back(glm::vec4(0.5f * float(k[0] + 1.0), 0.5f * float(k[1] + 1.0), 0.0f, 1.0f));
-        m.corners.push_back(glm::dvec3(k[0] * h, k[1] * h, 0.0));
-    }
-    m.indices = {0, 1, 2, 0, 2, 3};
-    return m;
-}
 
 Texture target_texture(const std::string& sampler, const std::string& target) {
     Texture t;
@@ -66,7 +45,7 @@ Texture white_texture(const std::string& sampler) {
 }
 
 // A pass drawing the mesh at its texture coordinates into `target`.
-Pass texture_space_pass(const std::string& target, int size, const Mesh& mesh, const std::string& fragment,
+Pass texture_space_pass(const std::string& target, int size, const ProfileMesh& mesh, const std::string& fragment,
                         std::vector<Uniform> uniforms, std::vector<Texture> textures) {
     Pass pass;
     pass.target = target;
@@ -98,15 +77,17 @@ ProfileSceneSpec read_profile_scene(JsonReader& scene) {
     spec.material = read_profile_material(material_r);
 
     JsonReader geometry_r = scene.object("geometry");
-    spec.shape = geometry_r.choice_or("shape", "slab", {"slab"});
-    spec.size_mm = geometry_r.number_or("size_mm", 40.0, 1e-3, 1e5);
+    spec.shape = read_profile_shape(geometry_r);
     spec.texture_size = geometry_r.integer_or("texture_size", 256, 4, kMaxTargetSize);
     geometry_r.finish();
 
     JsonReader view_r = scene.object("view");
     spec.view_angle = view_r.number_or("angle_deg", 30.0, 0.0, 89.0) * kPi / 180.0;
     spec.view_azimuth = view_r.number_or("azimuth_deg", -90.0, -360.0, 360.0) * kPi / 180.0;
-    spec.view_distance = view_r.number_or("distance_mm", 2.0 * spec.size_mm, 1e-3, 1e6);
+    const double extent = spec.shape.kind == "ellipsoid"
+                              ? 2.0 * std::max({spec.shape.radii.x, spec.shape.radii.y, spec.shape.radii.z})
+                              : spec.shape.size_mm;
+    spec.view_distance = view_r.number_or("distance_mm", 2.0 * extent, 1e-3, 1e6);
     spec.fov = view_r.number_or("fov_deg", 45.0, 1.0, 120.0) * kPi / 180.0;
     view_r.finish();
 
@@ -143,21 +124,22 @@ ProfileSceneSpec read_profile_scene(JsonReader& scene) {
 }
 
 glm::mat4 profile_view_proj(const ProfileSceneSpec& spec, SceneSize size) {
-    const Mesh mesh = slab_mesh(spec.size_mm);
+    const ProfileMesh mesh = profile_mesh(spec.shape);
     const double theta = spec.view_angle, phi = spec.view_azimuth, distance = spec.view_distance;
-    // The camera: `distance_mm` from the slab's centre, `angle_deg` from its
-    // normal, `azimuth_deg` around it.
+    // The camera: `distance_mm` from the origin (the slab's centre), `angle_deg`
+    // from the z axis (the slab's normal), `azimuth_deg` around it.
     const glm::dvec3 eye =
         distance * glm::dvec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
     const glm::dvec3 up = theta < 1e-6 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
     const glm::dvec3 forward = -glm::normalize(eye);
     double nearest = 1e30, farthest = 0;
-    for (const glm::dvec3& c : mesh.corners) {
+    for (const glm::dvec3& c : mesh.bounds) {
         const double z = glm::dot(c - eye, forward);
         nearest = std::min(nearest, z), farthest = std::max(farthest, z);
     }
     if (!(nearest > 1e-6 * distance))
-        throw InputError("field 'view.distance_mm': the camera is inside or beside the slab; move it further away");
+        throw InputError("field 'view.distance_mm': the camera is inside or beside the " + spec.shape.kind +
+                         "; move it further away");
     return glm::perspective(float(spec.fov), float(size.width) / float(size.height), float(0.5 * nearest),
                             float(2.0 * farthest)) *
            glm::lookAt(glm::vec3(eye), glm::vec3(0.0f), glm::vec3(up));
@@ -168,7 +150,7 @@ Frame build_profile_scene(JsonReader& scene, SceneSize size) {
     const ProfileMaterial& material = spec.material;
     const GatherSettings& gather = spec.gather;
     const int target_size = spec.texture_size;
-    const Mesh mesh = slab_mesh(spec.size_mm);
+    const ProfileMesh mesh = profile_mesh(spec.shape);
     const glm::vec3 light_direction = spec.light_direction, irradiance = spec.irradiance;
     const glm::vec4 spot = spec.spot, edge = spec.edge;
     const std::shared_ptr<const BuiltProfiles> profiles = build_profiles(material, gather);
@@ -202,6 +184,7 @@ Frame build_profile_scene(JsonReader& scene, SceneSize size) {
     d.fragment = thin ? "gather_thin" : "gather";
     d.vertices = mesh.vertices;
     d.indices = mesh.indices;
+    d.state.depth_test = spec.shape.curved();
     d.textures = {target_texture("irradiance", "irradiance")};
     if (thin) d.textures.push_back(target_texture("irradiance_back", "irradiance_back"));
     d.textures.push_back(target_texture("position_area", "position_area"));

@@ -427,6 +427,30 @@ ST_INLINE void load_rows8(const float* base, Int offset, Float (&out)[8]) {
         out[c] = Float(FloatV(_mm512_permutex2var_ps(u[c], lo, u[c + 4])));
         out[c + 4] = Float(FloatV(_mm512_permutex2var_ps(u[c], hi, u[c + 4])));
     }
+#elif defined(ST_SIMD_AVX2)
+    // The 8x8 transpose of the eight lanes' rows: pairs interleaved, then
+    // quads, then the 128-bit halves swapped between rows 0-3 and 4-7.
+    alignas(32) int32_t at[8];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(at), __m256i(offset.v));
+    __m256 r[8], t[8], u[8];
+    for (int j = 0; j < 8; ++j) r[j] = _mm256_loadu_ps(base + at[j]);
+    for (int j = 0; j < 4; ++j) {
+        t[2 * j] = _mm256_unpacklo_ps(r[2 * j], r[2 * j + 1]);
+        t[2 * j + 1] = _mm256_unpackhi_ps(r[2 * j], r[2 * j + 1]);
+    }
+    for (int h = 0; h < 2; ++h) {  // rows 0-3, then 4-7
+        const __m256 a0 = t[4 * h], a1 = t[4 * h + 1], b0 = t[4 * h + 2], b1 = t[4 * h + 3];
+        u[4 * h + 0] = _mm256_shuffle_ps(a0, b0, 0x44);
+        u[4 * h + 1] = _mm256_shuffle_ps(a0, b0, 0xee);
+        u[4 * h + 2] = _mm256_shuffle_ps(a1, b1, 0x44);
+        u[4 * h + 3] = _mm256_shuffle_ps(a1, b1, 0xee);
+    }
+    // u[c] (c < 4) holds float c of rows 0-3 in its low half and float c + 4
+    // in its high half; u[c + 4] the same for rows 4-7.
+    for (int c = 0; c < 4; ++c) {
+        out[c] = Float(FloatV(_mm256_permute2f128_ps(u[c], u[c + 4], 0x20)));
+        out[c + 4] = Float(FloatV(_mm256_permute2f128_ps(u[c], u[c + 4], 0x31)));
+    }
 #else
     for (int i = 0; i < kLanes; ++i)
         for (int c = 0; c < 8; ++c) out[c].v[i] = base[offset.v[i] + c];

@@ -215,8 +215,9 @@ Vec4 Sampler2D::fetch(Int x, Int y, Int level) const {
     const Int index = l.base + y * l.width + x;
     // Every lane reading one float texel (a table read in a loop, such as
     // the gather's sample pattern): one load of it for all.
-    if (tex_->format != TextureFormat::RGBA8 && all(inside) && simd::reduce_min(index) == simd::reduce_max(index)) {
-        const float* t = rgba32_.data() + size_t(simd::reduce_min(index)) * 4;
+    const int32_t first = index.v[0];
+    if (tex_->format != TextureFormat::RGBA8 && all(inside && index == Int(first))) {
+        const float* t = rgba32_.data() + size_t(first) * 4;
         return Vec4(Float(t[0]), Float(t[1]), Float(t[2]), Float(t[3]));
     }
     Vec4 r = gather_texels(tex_->format == TextureFormat::RGBA8, rgba8_.data(), rgba32_.data(), index, inside);
