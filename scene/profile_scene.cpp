@@ -123,13 +123,18 @@ ProfileSceneSpec read_profile_scene(JsonReader& scene) {
     return spec;
 }
 
-glm::mat4 profile_view_proj(const ProfileSceneSpec& spec, SceneSize size) {
-    const ProfileMesh mesh = profile_mesh(spec.shape);
-    const double theta = spec.view_angle, phi = spec.view_azimuth, distance = spec.view_distance;
+glm::dvec3 profile_eye(const ProfileSceneSpec& spec) {
     // The camera: `distance_mm` from the origin (the slab's centre), `angle_deg`
     // from the z axis (the slab's normal), `azimuth_deg` around it.
-    const glm::dvec3 eye =
-        distance * glm::dvec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+    const double theta = spec.view_angle, phi = spec.view_azimuth;
+    return spec.view_distance *
+           glm::dvec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+}
+
+glm::mat4 profile_view_proj(const ProfileSceneSpec& spec, SceneSize size) {
+    const ProfileMesh mesh = profile_mesh(spec.shape);
+    const double theta = spec.view_angle, distance = spec.view_distance;
+    const glm::dvec3 eye = profile_eye(spec);
     const glm::dvec3 up = theta < 1e-6 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
     const glm::dvec3 forward = -glm::normalize(eye);
     double nearest = 1e30, farthest = 0;
@@ -198,6 +203,14 @@ Frame build_profile_scene(JsonReader& scene, SceneSize size) {
                   uniform("r_max", float(profiles->r_max)),
                   uniform("profile_size", float(gather.table_size)),
                   uniform("texel_uv", 1.0f / float(target_size))};
+    // The rough boundary's reflection (Eq. 23): m the RMS slope.
+    const double m = material.roughness();
+    for (Uniform u : {int_uniform("rough", m > 0 ? 1 : 0), uniform("eta", float(material.eta())),
+                      uniform("inv_m2", m > 0 ? float(1.0 / (m * m)) : 0.0f),
+                      uniform("beckmann_norm", m > 0 ? float(1.0 / (kPi * m * m)) : 0.0f),
+                      uniform("eye", glm::vec3(profile_eye(spec))), uniform("light_direction", light_direction),
+                      uniform("light_irradiance", irradiance), uniform("spot", spot), uniform("edge", edge)})
+        d.uniforms.push_back(u);
     Pass pass;
     pass.width = size.width;
     pass.height = size.height;

@@ -32,5 +32,6 @@ struct ProfileSceneSpec {
 // names a bad one.
 ProfileSceneSpec read_profile_scene(JsonReader& scene);
 glm::mat4 profile_view_proj(const ProfileSceneSpec& spec, SceneSize size);
+glm::dvec3 profile_eye(const ProfileSceneSpec& spec);  // world, mm
 
 }  // namespace st

@@ -3,7 +3,8 @@
 // thick geometry (skin, marble, a semi-infinite body): the reflectance profile, with Eq. 27's blend by the normals (profile_gather.glsl).
 // The light leaves as a Lambertian exitance (L = M / pi: R(r) and T(r) are
 // exitance profiles, the boundary's effect on leaving light is inside them),
-// scaled by the texture convolved with the profile (Sec. 3.1).
+// scaled by the texture convolved with the profile (Sec. 3.1); a rough
+// surface adds its boundary's reflection (Eq. 23).
 // Twin: kernels/profile/gather_frag.cpp.
 #include "profile_gather.glsl"
 layout(location = 0) in vec4 v_position;
@@ -16,5 +17,7 @@ void main() {
     vec3 n = normalize(v_normal.xyz);
     vec3 m = diffused_light(v_position.xyz, n, v_uv.xy, false);
     vec3 tex = texture(albedo, v_uv.xy).rgb;
-    frag_colour = vec4(m * tex * 0.31830988, 1.0);
+    vec3 colour = m * tex * 0.31830988;
+    if (rough == 1) colour = colour + surface_reflection(v_position.xyz, n);
+    frag_colour = vec4(colour, 1.0);
 }

@@ -11,7 +11,10 @@
 // light entering the other face joins with the normal reversed, so that a
 // flat slab gathers its back-lit side through T(r). Samples beyond the
 // reach or off the texture-space layout carry nothing.
+// A rough surface also reflects the light at its boundary: Eq. 23's
+// Torrance-Sparrow lobe, under the light's pattern (surface_reflection).
 // Twin: kernels/profile/profile_gather.cpp.
+#include "profile_optics.glsl"
 uniform sampler2D irradiance;       // texture space: rgb entering this face
 uniform sampler2D irradiance_back;  // thin geometry: rgb entering the other face
 uniform sampler2D position_area;    // texture space: world position, texel area
@@ -23,6 +26,15 @@ uniform int samples;
 uniform float r_max;                // mm, the tables' last radius
 uniform float profile_size;         // entries of each table
 uniform float texel_uv;             // 1 / the texture-space targets' size
+uniform int rough;                  // 1: the boundary reflects (Eq. 23)
+uniform float eta;
+uniform float inv_m2;               // 1 / m^2, m the RMS slope
+uniform float beckmann_norm;        // 1 / (pi m^2)
+uniform vec3 eye;                   // world, mm
+uniform vec3 light_direction;       // unit, towards the light
+uniform vec3 light_irradiance;      // on a surface facing the light, per channel
+uniform vec4 spot;                  // the light's pattern, as irradiance.frag's
+uniform vec4 edge;
 
 // Eq. 27: the profile between points with normals n_s and n_l.
 vec3 blended_profile(float c, vec3 R, vec3 T) {
@@ -54,4 +66,13 @@ vec3 diffused_light(vec3 x, vec3 n_s, vec2 uv, bool thin) {
         m = m + light * w;
     }
     return m;
+}
+
+// The radiance the rough boundary at p reflects towards the eye: f_r of
+// Eq. 23 times the irradiance there (the light's, cos theta_i, its pattern).
+vec3 surface_reflection(vec3 p, vec3 n) {
+    vec3 v = normalize(eye - p);
+    float cos_i = max(dot(n, light_direction), 0.0);
+    float f_r = torrance_sparrow(n, light_direction, v, eta, inv_m2, beckmann_norm);
+    return light_irradiance * (f_r * cos_i * light_pattern(p.xy, spot, edge));
 }

@@ -25,7 +25,9 @@ Vec4 GatherFragment::main(const Fragment& frag) const {
     const Vec3 m = profile::diffused_light(frag.exec(), u_, frag.varying(v_position).xyz(), n,
                                            frag.varying(v_uv).xy(), false);
     const Vec3 tex = albedo_->sample(frag.varying(v_uv).xy()).xyz();
-    return Vec4(m * tex * Float(0.31830988f), Float(1.0f));
+    Vec3 colour = m * tex * Float(0.31830988f);
+    if (u_.rough) colour = colour + profile::surface_reflection(u_, frag.varying(v_position).xyz(), n);
+    return Vec4(colour, Float(1.0f));
 }
 
 }  // namespace st

@@ -2,7 +2,6 @@
 #include "kernels/profile/profile.h"
 
 #include "kernels/profile/profile_optics.h"
-#include "shading/derivatives.h"
 #include "shading/glsl_math.h"
 #include "texture/sampler2d.h"
 
@@ -25,21 +24,6 @@ void IrradianceFragment::bind(const Bindings& b) {
 
 uint32_t IrradianceFragment::inputs_read() const { return reads(v_position, "xyz") | reads(v_normal, "xyz"); }
 
-Float IrradianceFragment::coverage(Float s) const {
-    const Float w = glsl::max(fwidth(s), Float(1e-30f));
-    return glsl::min(glsl::max(s / w + Float(0.5f), Float(0.0f)), Float(1.0f));
-}
-
-Float IrradianceFragment::light_pattern(const Vec2& p) const {
-    const Vec2 d = p - Vec2(glm::vec2(spot_));
-    const Float in_spot =
-        spot_.z > 0.0f ? coverage(Float(spot_.z) - simd::sqrt(glsl::dot(d, d))) : Float(0.0f);
-    const Float beyond_edge =
-        edge_.w > 0.0f ? coverage(p.x * Float(edge_.x) + (p.y * Float(edge_.y) - Float(edge_.z))) : Float(0.0f);
-    const bool patterned = spot_.z > 0.0f || edge_.w > 0.0f;
-    return patterned ? glsl::max(in_spot, beyond_edge) : Float(1.0f);
-}
-
 Vec4 IrradianceFragment::main(const Fragment& frag) const {
     const Vec3 n0 = glsl::normalize(frag.varying(v_normal).xyz());
     const bool back = back_offset_ > 0.0f;
@@ -47,7 +31,7 @@ Vec4 IrradianceFragment::main(const Fragment& frag) const {
     const Vec3 p = frag.varying(v_position).xyz() - Float(back_offset_) * n0;
     const Float cos_i = glsl::max(glsl::dot(n, Vec3(light_direction_)), Float(0.0f));
     const Float t = profile::transmittance_in(glsl::min(cos_i, Float(1.0f)), Float(eta_), rough_, *rho_dt_);
-    const Float e = cos_i * t * light_pattern(Vec2(p.x, p.y));
+    const Float e = cos_i * t * profile::light_pattern(Vec2(p.x, p.y), spot_, edge_);
     return Vec4(Vec3(light_irradiance_) * e, Float(1.0f));
 }
 

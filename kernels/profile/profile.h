@@ -37,8 +37,6 @@ public:
     Vec4 main(const Fragment& frag) const;
 
 private:
-    Float coverage(Float s) const;
-    Float light_pattern(const Vec2& p) const;
     glm::vec3 light_direction_{0.0f}, light_irradiance_{0.0f};
     float eta_ = 1.0f, back_offset_ = 0.0f;
     bool rough_ = false;
@@ -67,6 +65,11 @@ struct GatherInputs {
     const Sampler2D* pattern = nullptr;
     int samples = 0;
     float r_max = 1.0f, profile_size = 2.0f, texel_uv = 1.0f;
+    // The rough boundary's reflection (surface_reflection).
+    bool rough = false;
+    float eta = 1.0f, inv_m2 = 0.0f, beckmann_norm = 0.0f;
+    glm::vec3 eye{0.0f}, light_direction{0.0f}, light_irradiance{0.0f};
+    glm::vec4 spot{0.0f}, edge{0.0f};
     void read(const Bindings& b, bool thin);
 };
 

@@ -4,6 +4,7 @@
 // variables (m, k) are masked (shading/control_flow.h).
 #include "kernels/profile/profile_gather.h"
 
+#include "kernels/profile/profile_optics.h"
 #include "shading/glsl_math.h"
 #include "texture/sampler2d.h"
 
@@ -21,6 +22,15 @@ void GatherInputs::read(const Bindings& b, bool thin) {
     r_max = b.get_float("r_max");
     profile_size = b.get_float("profile_size");
     texel_uv = b.get_float("texel_uv");
+    rough = b.get_int("rough") == 1;
+    eta = b.get_float("eta");
+    inv_m2 = b.get_float("inv_m2");
+    beckmann_norm = b.get_float("beckmann_norm");
+    eye = b.get_vec3("eye");
+    light_direction = b.get_vec3("light_direction");
+    light_irradiance = b.get_vec3("light_irradiance");
+    spot = b.get_vec4("spot");
+    edge = b.get_vec4("edge");
 }
 
 namespace profile {
@@ -57,6 +67,14 @@ Vec3 diffused_light(Exec& exec, const GatherInputs& u, const Vec3& x, const Vec3
         exec.assign(k, k + Int(1));
     });
     return m;
+}
+
+Vec3 surface_reflection(const GatherInputs& u, const Vec3& p, const Vec3& n) {
+    const Vec3 v = glsl::normalize(Vec3(u.eye) - p);
+    const Vec3 l(u.light_direction);
+    const Float cos_i = glsl::max(glsl::dot(n, l), Float(0.0f));
+    const Float f_r = torrance_sparrow(n, l, v, Float(u.eta), Float(u.inv_m2), Float(u.beckmann_norm));
+    return Vec3(u.light_irradiance) * (f_r * cos_i * light_pattern(Vec2(p.x, p.y), u.spot, u.edge));
 }
 
 }  // namespace profile
