@@ -78,6 +78,7 @@ ProfileSceneSpec read_profile_scene(JsonReader& scene) {
 
     JsonReader geometry_r = scene.object("geometry");
     spec.shape = read_profile_shape(geometry_r);
+    spec.thickness_map = read_thickness_map(geometry_r, spec.shape);
     spec.texture_size = geometry_r.integer_or("texture_size", 256, 4, kMaxTargetSize);
     geometry_r.finish();
 
@@ -178,8 +179,10 @@ Frame build_profile_scene(JsonReader& scene, SceneSize size) {
     for (int channel = 0; channel < 2; ++channel) {
         const std::string name = channel == 0 ? "position_area" : "surface_normal";
         target(name);
-        frame.passes.push_back(
-            texture_space_pass(name, target_size, mesh, "surface", {int_uniform("channel", channel)}, {}));
+        frame.passes.push_back(texture_space_pass(
+            name, target_size, mesh, "surface",
+            {int_uniform("channel", channel), uniform("displacement", float(spec.thickness_map.height_mm))},
+            {thickness_texture(spec.thickness_map, spec.shape, target_size)}));
     }
 
     const glm::mat4 view_proj = profile_view_proj(spec, size);

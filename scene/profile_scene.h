@@ -12,6 +12,7 @@
 #include "scene/json_reader.h"
 #include "scene/profile_material.h"
 #include "scene/profile_shape.h"
+#include "scene/profile_thickness.h"
 #include "scene/scene_kinds.h"
 
 namespace st {
@@ -20,6 +21,7 @@ struct ProfileSceneSpec {
     ProfileMaterial material;
     GatherSettings gather;
     ProfileShape shape;
+    ThicknessMap thickness_map;
     int texture_size = 256;
     double view_angle = 0, view_azimuth = 0, view_distance = 80, fov = 0.8;  // radians, mm
     glm::vec3 light_direction{0, 0, 1};  // unit, towards the light

@@ -46,12 +46,14 @@ private:
 
 class SurfaceFragment final : public FragmentProgram<SurfaceFragment> {  // surface.frag
 public:
-    void bind(const Bindings& b) override { channel_ = b.get_int("channel"); }
+    void bind(const Bindings& b) override;
     uint32_t inputs_read() const override;
     Vec4 main(const Fragment& frag) const;
 
 private:
     int channel_ = 0;
+    const Sampler2D* thickness_map_ = nullptr;
+    float displacement_ = 0.0f;
 };
 
 // The uniforms of profile_gather.glsl.
