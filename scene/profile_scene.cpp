@@ -15,6 +15,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/input_error.h"
+#include "scene/profile_albedo.h"
 #include "scene/profile_scene.h"
 #include "scene/scene_kinds.h"
 #include "scene/uniform_values.h"
@@ -32,15 +33,6 @@ Texture target_texture(const std::string& sampler, const std::string& target) {
     t.target = target;
     t.set_filter(TextureFilter::Linear);
     t.set_wrap(TextureWrap::ClampToEdge);
-    return t;
-}
-
-Texture white_texture(const std::string& sampler) {
-    Texture t;
-    t.sampler = sampler;
-    t.format = TextureFormat::RGBA8;
-    t.width = t.height = 1;
-    t.texels8 = {255, 255, 255, 255};
     return t;
 }
 
@@ -113,6 +105,7 @@ ProfileSceneSpec read_profile_scene(JsonReader& scene) {
     }
     light_r.finish();
 
+    if (auto a = scene.object_if("albedo")) spec.albedo = read_albedo_map(*a);
     if (auto g = scene.object_if("gather")) {
         GatherSettings& gather = spec.gather;
         gather.pattern = g->choice_or("pattern", gather.pattern, {"importance", "disk"});
@@ -200,7 +193,7 @@ Frame build_profile_scene(JsonReader& scene, SceneSize size) {
     d.textures.push_back(profiles->profile_R);
     d.textures.push_back(profiles->profile_T);
     d.textures.push_back(profiles->pattern);
-    d.textures.push_back(white_texture("albedo"));
+    d.textures.push_back(albedo_texture(spec.albedo, spec.shape, *profiles, thin, target_size));
     d.uniforms = {uniform("view_proj", view_proj),
                   int_uniform("samples", gather.samples),
                   uniform("r_max", float(profiles->r_max)),

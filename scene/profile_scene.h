@@ -10,6 +10,7 @@
 #include <glm/vec4.hpp>
 
 #include "scene/json_reader.h"
+#include "scene/profile_albedo.h"
 #include "scene/profile_material.h"
 #include "scene/profile_shape.h"
 #include "scene/profile_thickness.h"
@@ -22,6 +23,7 @@ struct ProfileSceneSpec {
     GatherSettings gather;
     ProfileShape shape;
     ThicknessMap thickness_map;
+    AlbedoMap albedo;  // Sec. 3.1
     int texture_size = 256;
     double view_angle = 0, view_azimuth = 0, view_distance = 80, fov = 0.8;  // radians, mm
     glm::vec3 light_direction{0, 0, 1};  // unit, towards the light

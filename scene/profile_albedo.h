@@ -1,0 +1,41 @@
+// profile_albedo.h: texturing a translucent material (Donner and Jensen
+// Sec. 3.1): an albedo map, convolved on the host with the material's
+// profile (R, plus T for thin geometry), "so that the color of the diffusion
+// process is used, rather than the texture color" normalised to a white mean,
+// and bound as the gather's `albedo`, which scales the diffused light.
+// The convolution runs over the shape's exact surface (profile_shape.h):
+// each texel gathers the texels within the profile's reach in world
+// distance, weighted by the profile and each texel's area, the weights
+// normalised per texel (so the layout's seams and borders lose nothing).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+#include "frame/frame.h"
+#include "scene/json_reader.h"
+#include "scene/profile_material.h"
+#include "scene/profile_shape.h"
+
+namespace st {
+
+struct AlbedoMap {
+    std::string pattern;             // "" (white, no texture) or "freckles"
+    int count = 400;                 // freckles: how many
+    double radius_mm = 1.5;          // their Gaussian radius
+    std::array<double, 3> strength{0.35, 0.5, 0.6};  // how much of each channel a freckle's centre takes away
+    uint64_t seed = 1;
+    bool textured() const { return !pattern.empty(); }
+};
+
+// Reads the scene's "albedo" object (absent: white); InputError names a bad field.
+AlbedoMap read_albedo_map(JsonReader& albedo);
+
+// The sampler "albedo": 1x1 white without a map, else the convolved and
+// normalised map at `size` x `size` (RGBA32F, bilinear; u repeats on an
+// ellipsoid, whose layout wraps there).
+Texture albedo_texture(const AlbedoMap& map, const ProfileShape& shape, const BuiltProfiles& profiles, bool thin,
+                       int size);
+
+}  // namespace st
