@@ -68,6 +68,7 @@ std::string profile_key(const ProfileMaterial& m) {
         k << ']';
     }
     if (m.model == "mc") k << " mc " << m.photons << ' ' << m.seed << ' ' << m.mc_r_max;
+    if (m.model == "multipole") k << " pairs " << m.max_dipole_pairs;
     return k.str();
 }
 
@@ -146,7 +147,13 @@ std::shared_ptr<BuiltProfiles> build(const ProfileMaterial& m, const GatherSetti
             if (rough) s.boundary_factor_top = optics::rough_boundary_factor(m.roughness(), m.eta());
             // The dipole is the multipole's central pair alone (Jensen et al. 2001).
             auto mp = std::make_shared<const optics::Multipole>(
-                m.model == "dipole" ? optics::Multipole(s, 0) : optics::Multipole::converged(s, 1e-4));
+                m.model == "dipole" ? optics::Multipole(s, 0)
+                                    : optics::Multipole::converged(s, 1e-4, optics::SourceDepth::FirstScatter,
+                                                                   m.max_dipole_pairs + 1));
+            if (mp->pairs_per_side() > m.max_dipole_pairs)
+                throw InputError("field '" + m.max_pairs_field + "': channel " + std::to_string(c) +
+                                 "'s multipole needs more than " + std::to_string(m.max_dipole_pairs) +
+                                 " dipole pairs per side to converge; raise the limit or thicken the slab");
             out->R[size_t(c)] = [mp](double r) { return mp->reflectance(r); };
             out->T[size_t(c)] = [mp](double r) { return mp->transmittance(r); };
             out->dipoles = std::max(out->dipoles, mp->dipoles());
@@ -286,6 +293,10 @@ ProfileMaterial read_profile_material(JsonReader& r) {
         if (!std::isfinite(flipped.front().thickness))
             throw InputError("field '" + r.field("flip") + "': a stack with a semi-infinite layer has no other side");
         m.layers = std::move(flipped);
+    }
+    if (m.model == "multipole") {
+        m.max_dipole_pairs = r.integer_or("max_dipole_pairs", m.max_dipole_pairs, 1, 1 << 20);
+        m.max_pairs_field = r.field("max_dipole_pairs");
     }
     if (m.model == "mc") {
         m.photons = r.integer_or("photons", int(m.photons), 1000, 100000000);

@@ -22,12 +22,18 @@
 
 namespace st {
 
+inline constexpr int kDefaultMaxDipolePairs = 1000;
+
 struct ProfileMaterial {
     std::string model;                       // "dipole", "multipole", "layered", "mc"
     std::vector<optics::LayerSpec> layers;   // top first; one for a single slab
     long long photons = 200000;              // mc, per channel
     uint64_t seed = 1;                       // mc
     double mc_r_max = 20;                    // mm, mc: the radial bins' reach
+    // multipole: the most dipole pairs per side the profile may take to
+    // converge (the paper used 1000); a slab that needs more is refused.
+    int max_dipole_pairs = kDefaultMaxDipolePairs;
+    std::string max_pairs_field = "material.max_dipole_pairs";  // for the refusal
     bool thin() const;  // the last layer is finite: light crosses to the other face
     double eta() const { return layers.front().eta; }          // of the top boundary
     double roughness() const { return layers.front().roughness; }

@@ -119,6 +119,13 @@ for line in sys.stdin:
     expect_bad_input "profile: a stack for the multipole" "$bin" render profile-parchment-multipole \
       --set 'material.layers=[{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1.3,"thickness":1},{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":1}]'
     expect_bad_input "profile: a missing layers file" "$bin" render profile-parchment-multipole --set material.layers_file=/no/such.json
+    # More dipole pairs than the stated limit (the parchment's multipole needs 9 per side).
+    expect_bad_input "profile: beyond the dipole-pair limit" "$bin" render profile-parchment-multipole --set material.max_dipole_pairs=2
+    expect_bad_input "profile: veins on an ellipsoid" "$bin" render profile-marble-rough-0.5 \
+      --set 'geometry.thickness_map={"height_mm":0.1}'
+    expect_bad_input "profile: a bend past 340 degrees" "$bin" render profile-leaf-front --set geometry.bend_deg=400
+    expect_bad_input "profile: a freckle that takes all of a channel" "$bin" render profile-skin-head-textured \
+      --set 'albedo.strength=[1,0.5,0.5]'
     expect_bad_input "zero resolution" "$bin" render triangles-basic --set width=0
     expect_bad_input "absurd resolution" "$bin" render triangles-basic --set height=100000
     expect_bad_input "threads 0" "$bin" render triangles-basic --threads 0
@@ -347,6 +354,105 @@ for m in ("dipole", "multipole", "mc"):
     assert abs(avg / want - 1) < 0.01, m
     seen[m] = avg
 assert seen["dipole"] < 0.9 * seen["mc"] and abs(seen["multipole"] / seen["mc"] - 1) < 0.03
+PY
+    ;;
+
+  profile_failures)
+    # Where the gather fails, each measured against what it should give.
+    # 1. The layout's seam: samples across u = 0/1 fall off the layout and
+    # carry nothing, so a seam facing the camera under even light is a dark
+    # line (docs/profile-rendering.md).
+    m=profile-marble-rough-0.5
+    "$bin" render $m --backend cpu --set light.direction=[0,-1,0.3] --set geometry.seam_azimuth_deg=-90 --out "$work/seam" >/dev/null
+    "$bin" render $m --backend cpu --set light.direction=[0,-1,0.3] --out "$work/noseam" >/dev/null
+    col() { oiiotool "$1" --cut "1x60+$2+130" --printstats | sed -n 's/.*Stats Avg: \([0-9.e-]*\).*/\1/p'; }
+    python3 - "$(col "$work/seam/$m.cpu.exr" 120)" "$(col "$work/seam/$m.cpu.exr" 135)" \
+      "$(col "$work/noseam/$m.cpu.exr" 120)" "$(col "$work/noseam/$m.cpu.exr" 135)" <<'PY' || fail "seam: not as measured"
+import sys
+at, beside, at0, beside0 = map(float, sys.argv[1:])
+print("seam: at %.4f beside %.4f; without it %.4f %.4f" % (at, beside, at0, beside0))
+assert at < 0.75 * at0, "the seam should darken its column by more than 25 %"
+assert abs(beside / beside0 - 1) < 0.01, "15 pixels from the seam the images should agree"
+PY
+    # 2. Undersampling: 16 samples of a profile narrower than their spacing
+    # give ghost copies of the spot, not a ring-symmetric falloff around it;
+    # 1024 give the falloff (8 points on a ring 16 pixels out, symmetric on
+    # the pixel grid).
+    for n in 16 1024; do
+      "$bin" render profile-slab-edge --backend cpu --set gather.samples=$n --set view.angle_deg=0 \
+        --set 'light.spot.centre_mm=[0,0]' --set light.edge.offset_mm=1000 --out "$work/ring$n" >/dev/null
+    done
+    python3 - "$work" <<'PY' || fail "undersampling: not as measured"
+import re, subprocess, sys
+def box(img, cx, cy):
+    out = subprocess.run(["oiiotool", img, "--cut", f"2x2+{159 + cx}+{119 + cy}", "--printstats"],
+                         capture_output=True, text=True, check=True).stdout
+    return float(re.search(r"Stats Avg: ([0-9.e-]+)", out).group(1))
+spread = {}
+for n in (16, 1024):
+    img = f"{sys.argv[1]}/ring{n}/profile-slab-edge.cpu.exr"
+    ring = [box(img, x, y) for x, y in ((16, 0), (-16, 0), (0, 16), (0, -16))]
+    spread[n] = max(ring) / max(min(ring), 1e-30)
+    print(n, "samples: ring", ring, "spread", spread[n])
+assert spread[16] > 3, "16 samples should show ghosts"
+assert spread[1024] < 1.15, "1024 samples should be near symmetric"
+PY
+    # 3. A profile wider than the layout: a uniformly lit 16 mm slab of skin 1
+    # (red reaches 1/sigma_tr = 3.7 mm and beyond) loses the tail that falls
+    # off its edges, where the 120 mm slab gives E (1 - F) R / pi.
+    for sz in 120 16; do
+      "$bin" render profile-slab-edge --backend cpu --set geometry.size_mm=$sz --set view.angle_deg=0 \
+        --set view.distance_mm=$((sz * 3 / 2)) --set 'light.spot.centre_mm=[0,0]' --set light.spot.radius_mm=100000 \
+        --out "$work/wide$sz" >/dev/null
+      oiiotool "$work/wide$sz/profile-slab-edge.cpu.exr" --cut 4x4+158+118 --printstats >"$work/wide$sz.stats"
+    done
+    "$bin" slab --model multipole --sigma-a 0.032 --sigma-s 0.74 --g 0 --eta 1.3 --thickness inf --json >"$work/skin1.json"
+    python3 - "$work" <<'PY' || fail "wide profile: not as measured"
+import json, re, sys, math
+w = sys.argv[1]
+red = lambda sz: float(re.search(r"Stats Avg: ([0-9.e-]+)", open(f"{w}/wide{sz}.stats").read()).group(1))
+eta = 1.3
+f0 = ((eta - 1) / (eta + 1)) ** 2
+want = 3.0 * (1 - f0) * json.load(open(f"{w}/skin1.json"))["R"] / math.pi
+print("wide profile: 120 mm %.4f, 16 mm %.4f, expected %.4f" % (red(120), red(16), want))
+assert abs(red(120) / want - 1) < 0.01
+assert red(16) < 0.97 * want, "the 16 mm slab should lose the profile's tail"
+PY
+    ;;
+
+  profile_scenes)
+    # The paper's observations on its Figures 5-8, on our scenes.
+    for s in profile-marble-rough-0.1 profile-marble-rough-1.0 profile-leaf-front profile-leaf-underside \
+             profile-leaf-back profile-jade-front profile-jade-paint-front profile-jade-back profile-jade-paint-back; do
+      "$bin" render $s --backend cpu --out "$work/$s" >/dev/null || fail "render $s"
+      oiiotool "$work/$s/$s.cpu.exr" --printstats >"$work/$s.stats"
+      oiiotool "$work/$s/$s.irradiance.cpu.exr" --printstats >"$work/$s.irradiance.stats"
+    done
+    python3 - "$work" <<'PY' || fail "profile scenes: an observation of the paper does not hold"
+import re, sys
+w = sys.argv[1]
+def avg(name, what=""):
+    t = open(f"{w}/{name}{what}.stats").read()
+    return [float(x) for x in re.search(r"Stats Avg: ([0-9.e-]+) ([0-9.e-]+) ([0-9.e-]+)", t).groups()]
+sat = lambda c: (max(c) - min(c)) / max(c)
+# Figure 7: rougher marble looks less saturated (its white reflection grows).
+# The paper also says less light enters; ours lets more in (rho_dt counts the
+# lobe's shadowing loss as transmitted, optics/rough_surface.h), printed here
+# and reported in docs/profile-rendering.md, not asserted.
+e01, e10 = avg("profile-marble-rough-0.1", ".irradiance"), avg("profile-marble-rough-1.0", ".irradiance")
+print("marble: light in", e01[0], "->", e10[0], "; saturation", sat(avg("profile-marble-rough-0.1")), "->", sat(avg("profile-marble-rough-1.0")))
+assert sat(avg("profile-marble-rough-1.0")) < 0.99 * sat(avg("profile-marble-rough-0.1"))
+# Figure 6: a leaf's two sides reflect differently (the spongy side far more, whiter).
+front, under = avg("profile-leaf-front"), avg("profile-leaf-underside")
+print("leaf: front", front, "underside", under)
+assert under[0] > 1.5 * front[0] and sat(under) < sat(front)
+back = avg("profile-leaf-back")
+assert back[1] > back[0] and back[1] > back[2], "transmitted light stays green"
+# Figure 5: paint whitens what jade reflects; what crosses stays green.
+jf, pf, jb, pb = (avg(s) for s in ("profile-jade-front", "profile-jade-paint-front", "profile-jade-back", "profile-jade-paint-back"))
+print("jade: front", jf, "painted", pf, "; back", jb, "painted", pb)
+assert sat(pf) < sat(jf)
+assert pb[1] > 2 * pb[0] and pb[1] > 2 * pb[2]
 PY
     ;;
 
