@@ -394,14 +394,21 @@ ST_INLINE Float gather(const float* base, Int index, Mask active) {
 #endif
 }
 
+// Lane offsets as unsigned scalars, for load_rows8: stored once, they serve
+// every texture of one shape read at the same taps, and an unsigned offset
+// needs no sign extension in an address.
+struct LaneOffsets {
+    alignas(64) uint32_t at[kLanes];
+    explicit LaneOffsets(Int offset) { std::memcpy(at, &offset.v, sizeof at); }
+};
+
 // The 8 floats at base + offset[i] (offset in floats) for every lane i,
 // transposed: out[c] holds float c of every lane's eight. Two neighbouring
 // RGBA32F texels are one 32-byte load per lane instead of eight gathers;
 // the caller guarantees all eight floats are in bounds.
-ST_INLINE void load_rows8(const float* base, Int offset, Float (&out)[8]) {
+ST_INLINE void load_rows8(const float* base, const LaneOffsets& offset, Float (&out)[8]) {
+    const uint32_t* at = offset.at;
 #if defined(ST_SIMD_AVX512)
-    alignas(64) int32_t at[16];
-    _mm512_store_si512(at, __m512i(offset.v));
     // Row j of each 8x8 block: lane j in the low half, lane j + 8 in the high.
     __m512 r[8];
     for (int j = 0; j < 8; ++j)
@@ -428,33 +435,33 @@ ST_INLINE void load_rows8(const float* base, Int offset, Float (&out)[8]) {
         out[c + 4] = Float(FloatV(_mm512_permutex2var_ps(u[c], hi, u[c + 4])));
     }
 #elif defined(ST_SIMD_AVX2)
-    // The 8x8 transpose of the eight lanes' rows: pairs interleaved, then
-    // quads, then the 128-bit halves swapped between rows 0-3 and 4-7.
-    alignas(32) int32_t at[8];
-    _mm256_store_si256(reinterpret_cast<__m256i*>(at), __m256i(offset.v));
-    __m256 r[8], t[8], u[8];
-    for (int j = 0; j < 8; ++j) r[j] = _mm256_loadu_ps(base + at[j]);
+    // The 8x8 transpose with its last stage done by the loads: row j < 4
+    // holds floats 0-3 of lane j in its low half and of lane j + 4 in its
+    // high half, row j + 4 floats 4-7 of the same lanes (a 128-bit load and
+    // a vinsertf128 from memory each), so two 4x4 transposes inside the
+    // 128-bit halves finish it: 16 shuffles instead of 24.
+    __m256 r[8];
     for (int j = 0; j < 4; ++j) {
-        t[2 * j] = _mm256_unpacklo_ps(r[2 * j], r[2 * j + 1]);
-        t[2 * j + 1] = _mm256_unpackhi_ps(r[2 * j], r[2 * j + 1]);
+        r[j] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(base + at[j])), _mm_loadu_ps(base + at[j + 4]), 1);
+        r[j + 4] = _mm256_insertf128_ps(_mm256_castps128_ps256(_mm_loadu_ps(base + at[j] + 4)),
+                                        _mm_loadu_ps(base + at[j + 4] + 4), 1);
     }
-    for (int h = 0; h < 2; ++h) {  // rows 0-3, then 4-7
-        const __m256 a0 = t[4 * h], a1 = t[4 * h + 1], b0 = t[4 * h + 2], b1 = t[4 * h + 3];
-        u[4 * h + 0] = _mm256_shuffle_ps(a0, b0, 0x44);
-        u[4 * h + 1] = _mm256_shuffle_ps(a0, b0, 0xee);
-        u[4 * h + 2] = _mm256_shuffle_ps(a1, b1, 0x44);
-        u[4 * h + 3] = _mm256_shuffle_ps(a1, b1, 0xee);
-    }
-    // u[c] (c < 4) holds float c of rows 0-3 in its low half and float c + 4
-    // in its high half; u[c + 4] the same for rows 4-7.
-    for (int c = 0; c < 4; ++c) {
-        out[c] = Float(FloatV(_mm256_permute2f128_ps(u[c], u[c + 4], 0x20)));
-        out[c + 4] = Float(FloatV(_mm256_permute2f128_ps(u[c], u[c + 4], 0x31)));
+    for (int h = 0; h < 2; ++h) {  // floats 0-3, then 4-7
+        const __m256 t0 = _mm256_unpacklo_ps(r[4 * h], r[4 * h + 1]), t1 = _mm256_unpackhi_ps(r[4 * h], r[4 * h + 1]);
+        const __m256 t2 = _mm256_unpacklo_ps(r[4 * h + 2], r[4 * h + 3]), t3 = _mm256_unpackhi_ps(r[4 * h + 2], r[4 * h + 3]);
+        out[4 * h + 0] = Float(FloatV(_mm256_shuffle_ps(t0, t2, 0x44)));
+        out[4 * h + 1] = Float(FloatV(_mm256_shuffle_ps(t0, t2, 0xee)));
+        out[4 * h + 2] = Float(FloatV(_mm256_shuffle_ps(t1, t3, 0x44)));
+        out[4 * h + 3] = Float(FloatV(_mm256_shuffle_ps(t1, t3, 0xee)));
     }
 #else
     for (int i = 0; i < kLanes; ++i)
-        for (int c = 0; c < 8; ++c) out[c].v[i] = base[offset.v[i] + c];
+        for (int c = 0; c < 8; ++c) out[c].v[i] = base[size_t(at[i]) + size_t(c)];
 #endif
+}
+
+ST_INLINE void load_rows8(const float* base, Int offset, Float (&out)[8]) {
+    load_rows8(base, LaneOffsets(offset), out);
 }
 
 // Lane i of the result is lane idx[i] of x: the quad shuffles behind dFdx.

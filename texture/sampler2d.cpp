@@ -112,6 +112,9 @@ Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
     pot_h_ = is_pot(texture.height);
     auto simple_wrap = [](TextureWrap w) { return w == TextureWrap::Repeat || w == TextureWrap::ClampToEdge; };
     aos_ = texture.format == TextureFormat::RGBA8 && simple_wrap(texture.wrap_s) && simple_wrap(texture.wrap_t);
+    clamped_bilinear_ = texture.format != TextureFormat::RGBA8 && !needs_lod() &&
+                        texture.mag_filter == TextureFilter::Linear && texture.wrap_s == TextureWrap::ClampToEdge &&
+                        texture.wrap_t == TextureWrap::ClampToEdge;
 
     size_t texels = 0;
     for (int l = 0; l <= last_level_; ++l) {
@@ -295,8 +298,12 @@ ST_INLINE Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, 
     auto bilinear = [&](Float a00, Float a10, Float a01, Float a11) {
         return lerp_float(v.weight, lerp_float(u.weight, a00, a10), lerp_float(u.weight, a01, a11));
     };
-    return Vec4(bilinear(t00.x, t10.x, t01.x, t11.x), bilinear(t00.y, t10.y, t01.y, t11.y),
-                bilinear(t00.z, t10.z, t01.z, t11.z), bilinear(t00.w, t10.w, t01.w, t11.w));
+    // Channels the caller does not read are 0, as gather_texels leaves them.
+    auto channel = [&](unsigned c, Float a00, Float a10, Float a01, Float a11) __attribute__((always_inline)) {
+        return (read >> c) & 1u ? bilinear(a00, a10, a01, a11) : Float(0.0f);
+    };
+    return Vec4(channel(0, t00.x, t10.x, t01.x, t11.x), channel(1, t00.y, t10.y, t01.y, t11.y),
+                channel(2, t00.z, t10.z, t01.z, t11.z), channel(3, t00.w, t10.w, t01.w, t11.w));
 }
 
 // The filter within one level, 8-bit AoS (§3.2): the result as byte pairs,
@@ -465,7 +472,7 @@ Vec4 Sampler2D::sample_bias(const Vec2& st, Float bias) const {
     return sample_levels(st, choose_levels(lod_.requested(half_fast_log2(quad_rho2(st)) + bias), mip_filter_, last_level_), false);
 }
 
-Vec4 Sampler2D::sample_lod(const Vec2& st, Float lod, unsigned read) const {
+Vec4 Sampler2D::sample_lod_levels(const Vec2& st, Float lod, unsigned read) const {
     if (!needs_lod()) return sample_base(st, read);
     return sample_levels(st, choose_levels(lod_.requested(lod), mip_filter_, last_level_), false);
 }

@@ -13,6 +13,7 @@
 
 #include "frame/frame.h"
 #include "simd/lane_vec.h"
+#include "texture/bilinear_taps.h"
 #include "texture/lod_selection.h"
 #include "texture/lod_state.h"
 
@@ -32,7 +33,16 @@ public:
     // GLSL textureLod(sampler2D, vec2, float): one LOD per lane. `read`
     // (texel::kReadRGB for .rgb) names the channels used; a float texture
     // without mip selection may then skip the others (they read anything).
-    Vec4 sample_lod(const Vec2& st, Float lod, unsigned read = texel::kReadRGBA) const;
+    ST_INLINE Vec4 sample_lod(const Vec2& st, Float lod, unsigned read = texel::kReadRGBA) const {
+        if (clamped_bilinear_) return sample_lod(bilinear_taps(st), read);
+        return sample_lod_levels(st, lod, read);
+    }
+    // textureLod(…, st, 0.0) on several textures of one size and sampler
+    // state, with the taps found once (texture/bilinear_taps.h): each
+    // sample_lod(taps, read) equals sample_lod(st, 0, read) bit for bit, on
+    // any texture (one of another shape or state samples taps.st afresh).
+    BilinearTaps bilinear_taps(const Vec2& st) const;
+    Vec4 sample_lod(const BilinearTaps& taps, unsigned read = texel::kReadRGBA) const;
     // GLSL textureGrad(sampler2D, vec2, vec2 dPdx, vec2 dPdy): per lane.
     Vec4 sample_grad(const Vec2& st, const Vec2& dpdx, const Vec2& dpdy) const;
     // textureGrad's levels depend on the derivatives alone, not on the
@@ -72,6 +82,8 @@ public:
 
 private:
     using LevelChoice = texel::LevelChoice;
+    Vec4 sample_lod_levels(const Vec2& st, Float lod, unsigned read) const;
+
     LevelLanes level_lanes(Int level) const;
     bool needs_lod() const;
     Vec4 sample_base(const Vec2& st, unsigned read = texel::kReadRGBA) const;
@@ -95,6 +107,9 @@ private:
 
     const Texture* tex_;
     int last_level_ = 0;
+    // One float level, LINEAR, CLAMP_TO_EDGE on both axes: sample_lod is
+    // the inlined filter of texture/clamped_bilinear.h.
+    bool clamped_bilinear_ = false;
     bool aos_ = false;        // RGBA8 with REPEAT/CLAMP_TO_EDGE: llvmpipe's 8-bit path
     bool pot_w_ = true, pot_h_ = true;
     MipFilter mip_filter_ = MipFilter::None;
@@ -119,3 +134,5 @@ private:
 };
 
 }  // namespace st
+
+#include "texture/clamped_bilinear.h"

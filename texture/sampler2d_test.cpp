@@ -5,6 +5,9 @@
 
 #include "texture/mip_generation.h"
 
+#include <cstring>
+#include <iterator>
+#include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -195,6 +198,74 @@ TEST(SampleGrad, HoistedLevelsAndAlphaOnlyAreTheSameBits) {
                     ASSERT_EQ(direct.z[lane], hoisted.z[lane]);
                     ASSERT_EQ(direct.w[lane], hoisted.w[lane]);
                     ASSERT_EQ(direct.w[lane], alpha[lane]) << "lane " << lane << " round " << round;
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace st
+
+namespace st {
+namespace {
+
+uint32_t bits_of(float f) {
+    uint32_t b;
+    std::memcpy(&b, &f, sizeof b);
+    return b;
+}
+
+// sample_lod through taps found once (texture/bilinear_taps.h, the inlined
+// clamped filter) gives the general float filter's bits, sample(st) on a
+// one-level texture: at random points, at and past the edges (the last
+// column's pair), on tables one texel high, for NaN and infinite
+// coordinates, with one or all channels read; and a texture of another
+// shape or state given the taps samples afresh.
+TEST(BilinearTaps, SameBitsAsTheGeneralFilter) {
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    const float specials[] = {nan, inf, -inf, 0.0f, 1.0f, -0.0f, 1e30f, -1e30f, 0.99999994f, 1.00001f};
+    struct Shape {
+        int w, h;
+    };
+    for (const Shape& k : {Shape{64, 64}, Shape{37, 5}, Shape{256, 1}, Shape{1, 1}, Shape{7, 1}})
+    for (TextureFormat format : {TextureFormat::RGBA32F, TextureFormat::RGBA16F}) {
+        const Texture a = ramp(format, TextureFilter::Linear, TextureWrap::ClampToEdge, k.w, k.h);
+        Texture b = ramp(format, TextureFilter::Linear, TextureWrap::ClampToEdge, k.w, k.h);
+        for (float& v : b.texels32) v = 1.0f - v;  // another texture of the same shape
+        const Texture other_shape = ramp(format, TextureFilter::Linear, TextureWrap::ClampToEdge, k.w + 3, k.h);
+        const Texture repeat = ramp(format, TextureFilter::Linear, TextureWrap::Repeat, k.w, k.h);
+        const Texture bytes = ramp(TextureFormat::RGBA8, TextureFilter::Linear, TextureWrap::ClampToEdge, k.w, k.h);
+        const Sampler2D sa(a), sb(b), s_other(other_shape), s_repeat(repeat), s_bytes(bytes);
+        std::mt19937 rng(11);
+        std::uniform_real_distribution<float> coord(-0.2f, 1.2f);
+        std::uniform_int_distribution<int> special(0, int(std::size(specials)) - 1), pick(0, 3);
+        for (int round = 0; round < 300; ++round) {
+            Vec2 st;
+            for (int lane = 0; lane < kLanes; ++lane) {
+                const int how = pick(rng);  // random, a special value, or the last column's centre and beyond
+                st.x.set(lane, how == 0 ? specials[special(rng)] : how == 1 ? 1.0f - 0.5f / float(k.w) : coord(rng));
+                st.y.set(lane, how == 2 ? specials[special(rng)] : coord(rng));
+            }
+            const BilinearTaps taps = sa.bilinear_taps(st);
+            for (const Sampler2D* s : {&sa, &sb, &s_other, &s_repeat, &s_bytes}) {
+                const Vec4 general = s->sample(st);  // one level: the filter alone, no LOD
+                const Vec4 all = s->sample_lod(taps);
+                const Vec4 rgb = s->sample_lod(taps, texel::kReadRGB);
+                const Vec4 direct = s->sample_lod(st, Float(0.0f), texel::kReadRGB);
+                for (int lane = 0; lane < kLanes; ++lane) {
+                    const float g[4] = {general.x[lane], general.y[lane], general.z[lane], general.w[lane]};
+                    const float t[4] = {all.x[lane], all.y[lane], all.z[lane], all.w[lane]};
+                    const float c[3] = {rgb.x[lane], rgb.y[lane], rgb.z[lane]};
+                    const float d[3] = {direct.x[lane], direct.y[lane], direct.z[lane]};
+                    for (int ch = 0; ch < 4; ++ch)
+                        ASSERT_EQ(bits_of(g[ch]), bits_of(t[ch]))
+                            << k.w << "x" << k.h << " lane " << lane << " channel " << ch << " st " << st.x[lane]
+                            << ", " << st.y[lane];
+                    for (int ch = 0; ch < 3; ++ch) {
+                        ASSERT_EQ(bits_of(g[ch]), bits_of(c[ch]));
+                        ASSERT_EQ(bits_of(g[ch]), bits_of(d[ch]));
+                    }
                 }
             }
         }

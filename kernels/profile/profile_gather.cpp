@@ -51,15 +51,19 @@ Vec3 diffused_light(Exec& exec, const GatherInputs& u, const Vec3& x, const Vec3
         loop.break_if(!(k < Int(u.samples)));
         const Vec4 s = u.pattern->fetch(k, Int(0), Int(0));
         const Vec2 uv_k = uv + s.xy() * uv_per_mm;
-        const Vec4 at = u.position_area->sample_lod(uv_k, lod0);
-        const Vec3 n_l = u.surface_normal->sample_lod(uv_k, lod0, texel::kReadRGB).xyz();
+        // The texture-space targets share one shape, the two tables another:
+        // each group's taps are found once (texture/bilinear_taps.h).
+        const BilinearTaps at_k = u.position_area->bilinear_taps(uv_k);
+        const Vec4 at = u.position_area->sample_lod(at_k);
+        const Vec3 n_l = u.surface_normal->sample_lod(at_k, texel::kReadRGB).xyz();
         const Float r = glsl::length(at.xyz() - x);
         const Vec2 tc(simd::sqrt(r / Float(u.r_max)) * Float(table_scale) + Float(table_offset), Float(0.5f));
-        const Vec3 R = u.profile_R->sample_lod(tc, lod0, texel::kReadRGB).xyz();
-        const Vec3 T = u.profile_T->sample_lod(tc, lod0, texel::kReadRGB).xyz();
+        const BilinearTaps at_r = u.profile_R->bilinear_taps(tc);
+        const Vec3 R = u.profile_R->sample_lod(at_r, texel::kReadRGB).xyz();
+        const Vec3 T = u.profile_T->sample_lod(at_r, texel::kReadRGB).xyz();
         const Float c = glsl::dot(n_s, n_l);
-        Vec3 light = u.irradiance->sample_lod(uv_k, lod0, texel::kReadRGB).xyz() * blended_profile(c, R, T);
-        if (thin) light = light + u.irradiance_back->sample_lod(uv_k, lod0, texel::kReadRGB).xyz() * blended_profile(-c, R, T);
+        Vec3 light = u.irradiance->sample_lod(at_k, texel::kReadRGB).xyz() * blended_profile(c, R, T);
+        if (thin) light = light + u.irradiance_back->sample_lod(at_k, texel::kReadRGB).xyz() * blended_profile(-c, R, T);
         const Mask on_layout = uv_k.x >= Float(0.0f) && uv_k.x <= Float(1.0f) && uv_k.y >= Float(0.0f) &&
                                uv_k.y <= Float(1.0f);
         const Float w = glsl::select(r < Float(u.r_max) && on_layout, s.z * (at.w / here_area), Float(0.0f));
