@@ -10,7 +10,10 @@
 // versus the measured CPU frame time. Settings that no other beats on both
 // are marked; the cheapest that keeps 99 % of the interior pixels within one
 // 8-bit step is named (the shadow edge, sharper than a texel of the
-// texture-space target, keeps a few pixels beyond it at any sample count). Writes a CSV, an SVG chart, the exact image and heat maps,
+// texture-space target, keeps a few pixels beyond it at any sample count).
+// The physics apart: each setting's interior also against the exact image
+// of the material's Monte Carlo profile, where the model's own error joins
+// the gather's. Writes a CSV, an SVG chart, the exact image and heat maps,
 // and Markdown.
 #include <algorithm>
 #include <chrono>
@@ -23,6 +26,7 @@
 #include "app/backends.h"
 #include "app/commands.h"
 #include "app/profile_exact.h"
+#include "app/profile_quality.h"
 #include "app/svg_chart.h"
 #include "image/compare.h"
 #include "image/image_io.h"
@@ -56,6 +60,7 @@ struct Result {
     std::vector<double> ms;
     double median_ms = 0;
     RegionError interior, edge_band;
+    RegionError physics;  // the interior against the exact image of the Monte Carlo profile
     bool undominated = false;
 };
 
@@ -126,6 +131,13 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
     const auto exact_start = std::chrono::steady_clock::now();
     const ProfileExact exact = exact_profile_image(scenes.front());
     const double exact_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - exact_start).count();
+    // The physics: the same convolution with the material's Monte Carlo
+    // profile (its bins reaching as quality: auto's reference does), over
+    // the same interior, so that the error of the model joins the gather's.
+    nlohmann::json mc_document = with_choice(scenes.front().document, "mc", 1);
+    mc_document["material"]["mc_r_max_mm"] = reference_reach_mm(mc_document["material"]);
+    ProfileExact exact_mc = exact_profile_image(load_scene_document(scene_name, mc_document, ""));
+    exact_mc.region = exact.region;
     std::error_code ec;
     std::filesystem::create_directories(out_dir, ec);
     if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
@@ -139,6 +151,7 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
         results[i].ms.push_back(first.ms);
         results[i].interior = region_error(first.image, exact, 1);
         results[i].edge_band = region_error(first.image, exact, 2);
+        results[i].physics = region_error(first.image, exact_mc, 1);
         images[i] = first.image;
     }
     // The other rounds time every setting once each, so that the machine's
@@ -169,7 +182,8 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
 
     std::ostringstream csv, md;
     csv << "pattern,samples,texture_size,cpu_ms_median,interior_rms_8bit,interior_max_8bit,interior_over_1lsb,"
-           "interior_rel_rms,edge_rms_8bit,edge_max_8bit,edge_over_1lsb,undominated\n";
+           "interior_rel_rms,edge_rms_8bit,edge_max_8bit,edge_over_1lsb,undominated,mc_interior_rms_8bit,"
+           "mc_interior_over_1lsb\n";
     md << "# Diffusion profiles: the gather's speed against its accuracy\n\n`shadertwin sweep profile --frames "
        << frames << "` on `" << scene_name << "`: every gather setting on the CPU (" << common.threads
        << " threads) against the exact image, the convolution of the light's spot and half-plane with the "
@@ -185,10 +199,15 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
        << (cheapest ? "`" + cheapest->setting.label() + "` (" + num(cheapest->median_ms) + " ms)" : std::string("none"))
        << ". Images: [exact](profile-sweep-exact.png), [most accurate setting](profile-sweep-best.png) (`"
        << best->setting.label() << "`), [their difference](profile-sweep-best-heat.png).\n\n";
+    md << "Against the physics: the same interior against the exact image of the material's Monte Carlo profile ("
+       << num(mc_document["material"]["mc_r_max_mm"].get<double>()) << " mm of bins): the model's error joins the "
+          "gather's, and no sample count takes the image below it.\n\n";
     md << "| setting | CPU ms | interior RMS / max (8-bit) | interior pixels > 1 step | interior rel. RMS (float) | "
-          "edge band RMS / max | edge band > 1 step |\n| --- | --- | --- | --- | --- | --- | --- |\n";
+          "edge band RMS / max | edge band > 1 step | interior RMS / > 1 step against Monte Carlo |\n"
+          "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
     ChartSeries imp{"importance-sampled", "#1f77b4", {}, {}, false, 2.5}, disk{"uniform disk", "#ff7f0e", {}, {}, false, 2.5},
-        front{"undominated", "#d62728", {}, {}, false, 0};
+        front{"undominated", "#d62728", {}, {}, false, 0},
+        physics{"importance-sampled, against Monte Carlo", "#2ca02c", {}, {}, false, 2.5};
     std::vector<const Result*> sorted;
     for (const Result& r : results) sorted.push_back(&r);
     std::sort(sorted.begin(), sorted.end(), [](const Result* a, const Result* b) { return a->median_ms < b->median_ms; });
@@ -197,23 +216,26 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
         ChartSeries& series = s.pattern == "importance" ? imp : disk;
         series.x.push_back(r->median_ms);
         series.y.push_back(std::max(r->interior.rms, 1e-3));
+        if (s.pattern == "importance")
+            physics.x.push_back(r->median_ms), physics.y.push_back(std::max(r->physics.rms, 1e-3));
         if (r->undominated) front.x.push_back(r->median_ms), front.y.push_back(std::max(r->interior.rms, 1e-3));
         csv << s.pattern << ',' << s.samples << ',' << s.texture_size << ',' << r->median_ms << ',' << r->interior.rms
             << ',' << r->interior.max << ',' << r->interior.over_1lsb << ',' << r->interior.rel_rms << ','
-            << r->edge_band.rms << ',' << r->edge_band.max << ',' << r->edge_band.over_1lsb << ',' << r->undominated
-            << '\n';
+            << r->edge_band.rms << ',' << r->edge_band.max << ',' << r->edge_band.over_1lsb << ',' << r->undominated << ','
+            << r->physics.rms << ',' << r->physics.over_1lsb << '\n';
         const std::string name = r->undominated ? "**" + s.label() + "**" : s.label();
         md << "| " << name << " | " << num(r->median_ms) << " | " << num(r->interior.rms) << " / "
            << num(r->interior.max) << " | " << num(100 * r->interior.over_1lsb) << " % | " << num(r->interior.rel_rms)
            << " | " << num(r->edge_band.rms) << " / " << num(r->edge_band.max) << " | "
-           << num(100 * r->edge_band.over_1lsb) << " % |\n";
+           << num(100 * r->edge_band.over_1lsb) << " % | " << num(r->physics.rms) << " / "
+           << num(100 * r->physics.over_1lsb) << " % |\n";
     }
     Chart chart;
     chart.title = "Diffusion-profile gather: image error against CPU time";
     chart.x_label = "CPU frame, ms (median)";
     chart.y_label = "interior RMS error, 8-bit steps (floored at 1e-3)";
     chart.log_x = chart.log_y = true;
-    chart.series = {imp, disk, front};
+    chart.series = {imp, disk, front, physics};
     write_text_file(out_dir + "/profile-sweep.svg", chart.svg());
     md << "\n![speed against accuracy](profile-sweep.svg)\n";
     write_text_file(out_dir + "/profile-sweep.csv", csv.str());

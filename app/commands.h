@@ -29,6 +29,9 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
 int cmd_sweep(const std::string& technique, const std::string& out_dir, const CommonOptions& common);
 int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions& common);
 int cmd_sweep_profile(const std::string& scene, const std::string& out_dir, int frames, const CommonOptions& common);
+// Every built-in profile scene when `scenes` is empty.
+int cmd_sweep_quality(const std::vector<std::string>& scenes, const std::string& out_dir, int frames,
+                      const CommonOptions& common);
 
 // Single-layer optics options of `slab` and `profile` (see docs/optics.md).
 struct SlabOptions {

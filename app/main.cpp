@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/profile_quality.h"
 #include "scene/input_error.h"
 
 namespace {
@@ -125,10 +126,13 @@ int main(int argc, char** argv) {
     std::string sweep_scene = "profile-slab-edge";
     auto* sweep = app.add_subcommand("sweep", "a technique's model along sweeps of its inputs (thin-slab: both "
                                               "backends; relief and profile: settings, speed against accuracy, CPU)");
-    sweep->add_option("technique", technique, "thin-slab | relief | profile")
+    sweep->add_option("technique", technique, "thin-slab | relief | profile | profile-quality")
         ->required()
-        ->check(CLI::IsMember({"thin-slab", "relief", "profile"}));
-    sweep->add_option("--scene", sweep_scene, "profile: the flat-slab scene measured against its exact image");
+        ->check(CLI::IsMember({"thin-slab", "relief", "profile", "profile-quality"}));
+    auto* sweep_scene_option = sweep->add_option(
+        "--scene", sweep_scene,
+        "profile: the flat-slab scene measured against its exact image; profile-quality: the one scene (default: "
+        "every built-in profile scene)");
     sweep->add_option("--out", out_dir, "output folder (CSV, SVG charts, Markdown)");
     sweep->add_option("--frames", sweep_frames, "relief, profile: timed rounds per setting (medians)")->check(CLI::Range(1, 1000));
     add_common(sweep, common);
@@ -150,6 +154,8 @@ int main(int argc, char** argv) {
     }
 
     try {
+        // A scene's `quality: auto` is resolved by rendering candidates (app/profile_quality.h).
+        st::install_quality_resolver(common.threads);
         if (version) return st::cmd_version();
         if (app.got_subcommand("list")) return st::cmd_list();
         if (*render) return st::cmd_render(scenes, backend, out_dir, common);
@@ -172,6 +178,10 @@ int main(int argc, char** argv) {
         if (*sweep) {
             if (technique == "relief") return st::cmd_sweep_relief(out_dir, sweep_frames, common);
             if (technique == "profile") return st::cmd_sweep_profile(sweep_scene, out_dir, sweep_frames, common);
+            if (technique == "profile-quality")
+                return st::cmd_sweep_quality(sweep_scene_option->count() ? std::vector<std::string>{sweep_scene}
+                                                                         : std::vector<std::string>{},
+                                             out_dir, sweep_frames, common);
             return st::cmd_sweep(technique, out_dir, common);
         }
         std::cerr << "shadertwin: no command given (try --help)\n";

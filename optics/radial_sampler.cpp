@@ -82,4 +82,9 @@ std::vector<GatherSample> RadialSampler::importance_pattern(int n) const {
     return out;
 }
 
+double radial_total(const std::function<double(double)>& profile, double tail_fraction) {
+    if (reference::profile_total(profile, reference::ConvolutionSettings{1e4, 1e-10}) == 0.0) return 0.0;
+    return RadialSampler(profile, tail_fraction).total();
+}
+
 }  // namespace st::optics

@@ -38,4 +38,9 @@ private:
     std::vector<double> r_, cumulative_;  // the table radius() inverts
 };
 
+// A profile's integral over the plane, as RadialSampler::total(), for a
+// profile that may carry nothing at all (a Monte Carlo channel that no
+// photon crosses): 0 then, where RadialSampler finds no reach.
+double radial_total(const std::function<double(double)>& profile, double tail_fraction);
+
 }  // namespace st::optics

@@ -97,5 +97,14 @@ TEST(RadialSampler, RejectsBadProfiles) {
     EXPECT_THROW(RadialSampler(exponential(1)).importance_pattern(0), std::invalid_argument);
 }
 
+// radial_total: a channel that carries nothing (Monte Carlo's blue through
+// 1.5 mm of dermis) has total 0, where RadialSampler refuses it; any other
+// profile gets RadialSampler's total.
+TEST(RadialSampler, TotalOfAProfileThatCarriesNothing) {
+    EXPECT_EQ(radial_total([](double) { return 0.0; }, 1e-3), 0.0);
+    EXPECT_THROW(RadialSampler([](double) { return 0.0; }), std::invalid_argument);
+    EXPECT_EQ(radial_total(exponential(1), 1e-3), RadialSampler(exponential(1), 1e-3).total());
+}
+
 }  // namespace
 }  // namespace st::optics

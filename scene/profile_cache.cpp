@@ -27,12 +27,33 @@ std::optional<fs::path> cache_dir() {
 }
 
 // FNV-1a: a file name that is the same in every build.
-std::string file_name(const std::string& key) {
+std::string file_name(const std::string& key, const char* extension = ".bin") {
     uint64_t h = 1469598103934665603ull;
     for (unsigned char c : key) h = (h ^ c) * 1099511628211ull;
     std::ostringstream s;
-    s << std::hex << h << ".bin";
+    s << std::hex << h << extension;
     return s.str();
+}
+
+// Writes through a temporary file and a rename; false (nothing left) on failure.
+template <class Write> bool write_atomically(const fs::path& path, Write&& write) {
+    std::error_code ec;
+    fs::create_directories(path.parent_path(), ec);
+    if (ec) return false;
+    const fs::path tmp = path.string() + ".tmp" + std::to_string(::getpid());
+    {
+        std::ofstream out(tmp, std::ios::binary);
+        if (!out) return false;
+        write(out);
+        if (!out) {
+            out.close();
+            fs::remove(tmp, ec);
+            return false;
+        }
+    }
+    fs::rename(tmp, path, ec);
+    if (ec) fs::remove(tmp, ec);
+    return !ec;
 }
 
 void put(std::ostream& o, uint64_t n) { o.write(reinterpret_cast<const char*>(&n), sizeof n); }
@@ -73,14 +94,7 @@ std::optional<TabulatedProfiles> load_cached_profiles(const std::string& key) {
 void store_cached_profiles(const std::string& key, const TabulatedProfiles& t) {
     const auto dir = cache_dir();
     if (!dir) return;
-    std::error_code ec;
-    fs::create_directories(*dir, ec);
-    if (ec) return;
-    const fs::path path = *dir / file_name(key);
-    const fs::path tmp = path.string() + ".tmp" + std::to_string(::getpid());
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        if (!out) return;
+    write_atomically(*dir / file_name(key), [&](std::ofstream& out) {
         out.write(kMagic, std::streamsize(std::string(kMagic).size()));
         put(out, uint64_t(key.size()));
         out.write(key.data(), std::streamsize(key.size()));
@@ -88,14 +102,40 @@ void store_cached_profiles(const std::string& key, const TabulatedProfiles& t) {
         put(out, uint64_t(t.radii.size()));
         put(out, t.radii);
         for (int c = 0; c < 3; ++c) put(out, t.R[size_t(c)]), put(out, t.T[size_t(c)]);
-        if (!out) {
-            out.close();
-            fs::remove(tmp, ec);
-            return;
-        }
-    }
-    fs::rename(tmp, path, ec);
-    if (ec) fs::remove(tmp, ec);
+    });
+}
+
+// A record: the magic line, the key's size and the key, then the value.
+constexpr const char* kRecordMagic = "shadertwin record 1\n";
+
+std::optional<std::string> load_cached_record(const std::string& key) {
+    const auto dir = cache_dir();
+    if (!dir) return std::nullopt;
+    std::ifstream in(*dir / file_name(key, ".txt"), std::ios::binary);
+    if (!in) return std::nullopt;
+    std::string magic(std::string(kRecordMagic).size(), '\0');
+    uint64_t key_size = 0, value_size = 0;
+    if (!in.read(magic.data(), std::streamsize(magic.size())) || magic != kRecordMagic || !get(in, key_size) ||
+        key_size > (1u << 20))
+        return std::nullopt;
+    std::string stored(key_size, '\0');
+    if (!in.read(stored.data(), std::streamsize(key_size)) || stored != key) return std::nullopt;
+    if (!get(in, value_size) || value_size > (1u << 20)) return std::nullopt;
+    std::string value(value_size, '\0');
+    if (!in.read(value.data(), std::streamsize(value_size))) return std::nullopt;
+    return value;
+}
+
+void store_cached_record(const std::string& key, const std::string& value) {
+    const auto dir = cache_dir();
+    if (!dir) return;
+    write_atomically(*dir / file_name(key, ".txt"), [&](std::ofstream& out) {
+        out.write(kRecordMagic, std::streamsize(std::string(kRecordMagic).size()));
+        put(out, uint64_t(key.size()));
+        out.write(key.data(), std::streamsize(key.size()));
+        put(out, uint64_t(value.size()));
+        out.write(value.data(), std::streamsize(value.size()));
+    });
 }
 
 }  // namespace st

@@ -25,4 +25,9 @@ std::optional<TabulatedProfiles> load_cached_profiles(const std::string& key);
 // Best effort: a cache that cannot be written is skipped without a word.
 void store_cached_profiles(const std::string& key, const TabulatedProfiles& profiles);
 
+// A short text kept the same way under its key (a scene's resolved
+// `quality: auto`, app/profile_quality.h).
+std::optional<std::string> load_cached_record(const std::string& key);
+void store_cached_record(const std::string& key, const std::string& value);
+
 }  // namespace st

@@ -182,8 +182,8 @@ std::shared_ptr<BuiltProfiles> build(const ProfileMaterial& m, const GatherSetti
         const optics::RadialSampler channel([R, T, thin](double r) { return R(r) + (thin ? T(r) : 0.0); },
                                             g.tail_fraction);
         reach = std::max(reach, channel.r_max());
-        out->total_R[size_t(c)] = optics::RadialSampler(R, g.tail_fraction).total();
-        out->total_T[size_t(c)] = thin ? optics::RadialSampler(T, g.tail_fraction).total() : 0.0;
+        out->total_R[size_t(c)] = optics::radial_total(R, g.tail_fraction);
+        out->total_T[size_t(c)] = thin ? optics::radial_total(T, g.tail_fraction) : 0.0;
     }
     out->r_max = reach;
     std::vector<float> tr(size_t(g.table_size) * 4), tt(size_t(g.table_size) * 4);

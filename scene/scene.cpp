@@ -35,6 +35,11 @@ const std::map<std::string, SceneBuilder>& scene_builders() {
 
 std::string builtin_scene_dir() { return SHADERTWIN_SCENE_DIR; }
 
+static QualityResolver& quality_resolver() {
+    static QualityResolver resolver;
+    return resolver;
+}
+
 std::vector<std::string> builtin_scene_names() {
     std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(builtin_scene_dir()))
@@ -87,14 +92,24 @@ Scene load_scene(const std::string& name_or_path, const std::vector<std::string>
         if (is_path) throw InputError("cannot read scene file " + path.string());
         throw InputError("unknown scene '" + name_or_path + "' (shadertwin list shows the built-in ones)");
     }
-    Scene scene;
-    scene.name = path.stem().string();
-    scene.document = nlohmann::json::parse(in, nullptr, false);
-    if (scene.document.is_discarded()) throw InputError(path.string() + ": malformed JSON");
-    if (!scene.document.is_object()) throw InputError(path.string() + ": a scene must be a JSON object");
-    for (const std::string& o : overrides) apply_override(scene.document, o);
+    nlohmann::json document = nlohmann::json::parse(in, nullptr, false);
+    if (document.is_discarded()) throw InputError(path.string() + ": malformed JSON");
+    if (!document.is_object()) throw InputError(path.string() + ": a scene must be a JSON object");
+    for (const std::string& o : overrides) apply_override(document, o);
+    return load_scene_document(path.stem().string(), std::move(document), path.string());
+}
 
+void set_quality_resolver(QualityResolver resolver) { quality_resolver() = std::move(resolver); }
+
+Scene load_scene_document(const std::string& name, nlohmann::json document, const std::string& where) {
+    Scene scene;
+    scene.name = name;
+    scene.document = std::move(document);
     try {
+        if (scene.document.contains("quality")) {
+            if (!quality_resolver()) throw InputError("field 'quality' needs shadertwin's measuring, not available here");
+            quality_resolver()(name, scene.document);
+        }
         JsonReader r(scene.document, "");
         scene.kind = r.string("kind");
         scene.description = r.string_or("description", "");
@@ -105,7 +120,7 @@ Scene load_scene(const std::string& name_or_path, const std::vector<std::string>
         scene.frame = builder->second(r, size);
         r.finish();
     } catch (const InputError& e) {
-        throw InputError(path.string() + ": " + e.what());
+        throw InputError(where.empty() ? std::string(e.what()) : where + ": " + e.what());
     }
     return scene;
 }

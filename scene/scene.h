@@ -3,6 +3,7 @@
 // docs/scenes.md.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,17 @@ struct Scene {
 // Throws InputError with one line on any problem: unknown scene, malformed
 // JSON, unknown/missing/mistyped field, out-of-range value, bad override.
 Scene load_scene(const std::string& name_or_path, const std::vector<std::string>& overrides);
+// The same from a document already read and overridden; `where` prefixes
+// its errors (the file's path; none when empty).
+Scene load_scene_document(const std::string& name, nlohmann::json document, const std::string& where);
+
+// A scene's top-level "quality" field ("auto": the cheapest settings within
+// an image-error budget, app/profile_quality.h) is resolved by measuring,
+// which needs renderers this layer does not know: the app sets a resolver,
+// which rewrites the document (its chosen fields in, "quality" out) before
+// the scene is built. Without one, such a scene is refused.
+using QualityResolver = std::function<void(const std::string& name, nlohmann::json& document)>;
+void set_quality_resolver(QualityResolver resolver);
 
 std::vector<std::string> builtin_scene_names();
 std::string builtin_scene_dir();

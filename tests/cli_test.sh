@@ -126,6 +126,12 @@ for line in sys.stdin:
     expect_bad_input "profile: a bend past 340 degrees" "$bin" render profile-leaf-front --set geometry.bend_deg=400
     expect_bad_input "profile: a freckle that takes all of a channel" "$bin" render profile-skin-head-textured \
       --set 'albedo.strength=[1,0.5,0.5]'
+    # quality: auto (app/profile_quality.h).
+    expect_bad_input "quality: not auto" "$bin" render profile-slab-edge --set quality=fast
+    expect_bad_input "quality: a budget of 0 steps" "$bin" render profile-slab-edge --set quality=auto --set quality_budget=0
+    expect_bad_input "quality: a non-numeric budget" "$bin" render profile-slab-edge --set quality=auto --set quality_budget=loose
+    expect_bad_input "quality: auto on a relief scene" "$bin" render relief-mapping --set quality=auto
+    expect_bad_input "quality: auto with a bad material" "$bin" render profile-slab-edge --set quality=auto --set gather.table_size=1
     expect_bad_input "zero resolution" "$bin" render triangles-basic --set width=0
     expect_bad_input "absurd resolution" "$bin" render triangles-basic --set height=100000
     expect_bad_input "threads 0" "$bin" render triangles-basic --threads 0
@@ -418,6 +424,45 @@ print("wide profile: 120 mm %.4f, 16 mm %.4f, expected %.4f" % (red(120), red(16
 assert abs(red(120) / want - 1) < 0.01
 assert red(16) < 0.97 * want, "the 16 mm slab should lose the profile's tail"
 PY
+    ;;
+
+  profile_quality)
+    # quality: auto renders the cheapest model and sample count within the
+    # budget, found by measuring against the Monte Carlo reference
+    # (app/profile_quality.h); the sweep's table names the same choice, the
+    # candidate before it (fewer samples, or a cheaper model) misses the
+    # budget, and a second run takes the choice from the cache.
+    export SHADERTWIN_CACHE="$work/cache"
+    s=profile-slab-edge
+    "$bin" sweep profile-quality --scene $s --frames 1 --out "$work/q" >"$work/q.out" 2>"$work/q.err" ||
+      fail "sweep profile-quality: $(cat "$work/q.err")"
+    python3 - "$work/q/profile-quality.csv" >"$work/choice" <<'PY' || fail "quality table: not as it should be"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+chosen = [r for r in rows if r["chosen"] == "1"]
+assert len(chosen) == 1, "one choice expected"
+c = chosen[0]
+assert c["within"] == "1" and float(c["over_budget"]) <= 0.01, c
+# Everything tried before it was over the budget, and it is the first of its model within.
+before = rows[:rows.index(c)]
+assert before and all(r["within"] == "0" for r in before), "the candidates tried before the choice must miss"
+cheaper = [r for r in rows if int(r["samples"]) < int(c["samples"]) and r["within"] == "1"]
+assert not cheaper, "a candidate with fewer samples met the budget"
+print(c["model"], c["samples"])
+PY
+    read -r model samples <"$work/choice"
+    echo "choice: $model $samples"
+    t0=$(date +%s.%N)
+    auto=$("$bin" render $s --backend cpu --set quality=auto --out "$work/auto" | python3 -c 'import json,sys; print(json.load(sys.stdin)["hash"])')
+    t1=$(date +%s.%N)
+    explicit=$("$bin" render $s --backend cpu --set material.model=$model --set gather.samples=$samples \
+      --out "$work/explicit" | python3 -c 'import json,sys; print(json.load(sys.stdin)["hash"])')
+    [ "$auto" = "$explicit" ] || fail "quality: auto rendered $auto, the choice $model $samples renders $explicit"
+    ls "$SHADERTWIN_CACHE"/*.txt >/dev/null || fail "the resolved choice was not cached"
+    python3 -c "import sys; t = float(sys.argv[2]) - float(sys.argv[1]); print('auto from the cache: %.2f s' % t); assert t < 5" "$t0" "$t1" ||
+      fail "quality: auto took too long with the choice cached"
+    # Both backends render the resolved scene alike.
+    "$bin" compare $s --set quality=auto --out "$work/cmp" >"$work/cmp.out" || fail "compare with quality: auto: $(cat "$work/cmp.out")"
     ;;
 
   profile_scenes)
