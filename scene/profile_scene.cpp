@@ -105,7 +105,13 @@ ProfileSceneSpec read_profile_scene(JsonReader& scene) {
     }
     light_r.finish();
 
-    if (auto a = scene.object_if("albedo")) spec.albedo = read_albedo_map(*a);
+    if (auto a = scene.object_if("albedo")) {
+        spec.albedo = read_albedo_map(*a);
+        // Its convolution runs over the shape's exact surface.
+        if (spec.albedo.textured() && !spec.shape.exact())
+            throw InputError("field '" + scene.field("albedo") + "': texturing needs a generated shape (slab, sheet, "
+                             "ellipsoid); a mesh has no exact surface here");
+    }
     if (auto g = scene.object_if("gather")) {
         GatherSettings& gather = spec.gather;
         gather.pattern = g->choice_or("pattern", gather.pattern, {"importance", "disk"});

@@ -2,12 +2,14 @@
 // tessellations.
 #include "scene/profile_shape.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include <glm/geometric.hpp>
 
 #include "scene/input_error.h"
+#include "scene/mesh_file.h"
 
 namespace st {
 
@@ -65,7 +67,15 @@ ProfileMesh grid_mesh(const ProfileShape& shape, int nu, int nv) {
 
 ProfileShape read_profile_shape(JsonReader& geometry) {
     ProfileShape s;
-    s.kind = geometry.choice_or("shape", "slab", {"slab", "sheet", "ellipsoid"});
+    s.kind = geometry.choice_or("shape", "slab", {"slab", "sheet", "ellipsoid", "mesh"});
+    if (s.kind == "mesh") {
+        s.mesh = std::make_shared<const ProfileMesh>(
+            read_mesh_file(geometry.string("mesh_file"), geometry.field("mesh_file")));
+        // The view's default distance: twice the mesh's largest extent.
+        const glm::dvec3 extent = s.mesh->bounds.back() - s.mesh->bounds.front();
+        s.size_mm = std::max({extent.x, extent.y, extent.z, 1e-3});
+        return s;
+    }
     s.size_mm = geometry.number_or("size_mm", 40.0, 1e-3, 1e5);
     if (s.kind == "sheet") s.bend_deg = geometry.number_or("bend_deg", 0.0, 0.0, 340.0);
     if (s.kind == "ellipsoid") {
@@ -96,6 +106,7 @@ SurfacePoint surface_point(const ProfileShape& shape, double u, double v) {
 }
 
 ProfileMesh profile_mesh(const ProfileShape& shape) {
+    if (shape.kind == "mesh") return *shape.mesh;
     if (shape.kind == "slab") return slab_mesh(shape.size_mm);
     if (shape.kind == "sheet") return grid_mesh(shape, shape.segments, 2);
     return grid_mesh(shape, shape.segments, std::max(2, shape.segments / 2));

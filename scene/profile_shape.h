@@ -10,11 +10,15 @@
 //   ellipsoid  semi-axes radii, u the azimuth about z (the seam where the
 //              layout's u wraps, at seam_azimuth_deg), v from the -z pole to
 //              the +z pole (a head, a marble block).
+//   mesh       the user's own, from an OBJ file with its layout
+//              (scene/mesh_file.h); it has no exact surface here, so
+//              texturing, thickness maps and exact images refuse it.
 // point() is the exact surface that mesh() tessellates, for the host's own
 // convolutions (Sec. 3.1 texturing) and the exact images.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,6 +29,13 @@
 
 namespace st {
 
+// Vertex attributes of every profile program: position, normal, uv.
+struct ProfileMesh {
+    VertexArray vertices;
+    std::vector<uint32_t> indices;
+    std::vector<glm::dvec3> bounds;  // points whose hull holds it, for the camera's near and far
+};
+
 struct ProfileShape {
     std::string kind = "slab";  // "slab", "sheet", "ellipsoid"
     double size_mm = 40;        // slab, sheet: the side
@@ -32,7 +43,9 @@ struct ProfileShape {
     glm::dvec3 radii{20, 20, 20};   // ellipsoid, mm
     double seam_azimuth_deg = 90;   // ellipsoid: azimuth of u = 0 and 1 (default +y, away from the default view)
     int segments = 64;          // sheet, ellipsoid: quads around (half as many pole to pole)
+    std::shared_ptr<const ProfileMesh> mesh;  // mesh: as read from geometry.mesh_file
     bool curved() const { return kind != "slab"; }
+    bool exact() const { return kind != "mesh"; }  // surface_point() knows it
 };
 
 // Reads the geometry object's shape fields (the caller finishes it).
@@ -44,12 +57,6 @@ struct SurfacePoint {
 };
 SurfacePoint surface_point(const ProfileShape& shape, double u, double v);
 
-// Vertex attributes of every profile program: position, normal, uv.
-struct ProfileMesh {
-    VertexArray vertices;
-    std::vector<uint32_t> indices;
-    std::vector<glm::dvec3> bounds;  // points whose hull holds it, for the camera's near and far
-};
 ProfileMesh profile_mesh(const ProfileShape& shape);
 
 }  // namespace st

@@ -13,7 +13,7 @@ ThicknessMap read_thickness_map(JsonReader& geometry, const ProfileShape& shape)
     ThicknessMap map;
     auto t = geometry.object_if("thickness_map");
     if (!t) return map;
-    if (shape.kind == "ellipsoid")
+    if (shape.kind == "ellipsoid" || shape.kind == "mesh")
         throw InputError("field '" + geometry.field("thickness_map") + "': veins are laid out on a slab or a sheet");
     map.height_mm = t->number("height_mm", 1e-6, 1e3);
     map.vein_spacing_mm = t->number_or("vein_spacing_mm", map.vein_spacing_mm, 1e-3, 1e5);
