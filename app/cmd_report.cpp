@@ -12,6 +12,7 @@
 #include "app/commands.h"
 #include "app/comparison.h"
 #include "app/provenance.h"
+#include "app/short_number.h"
 #include "image/image_io.h"
 #include "scene/scene.h"
 
@@ -19,11 +20,6 @@ namespace st {
 
 namespace {
 
-std::string fmt(double v, int precision = 6) {
-    std::ostringstream s;
-    s << std::setprecision(precision) << v;
-    return s.str();
-}
 
 std::string fixed(double v, int decimals) {
     std::ostringstream s;
@@ -56,9 +52,9 @@ std::string cost_markdown(const std::vector<BenchResult>& costs, int frames) {
        << "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const auto& r : costs)
         md << "| " << r.scene << " | " << r.width << "x" << r.height << " | " << fixed(r.cpu.fps(), 1) << " | "
-           << fixed(r.gl.fps(), 1) << " | " << fixed(r.cpu.fps() / r.gl.fps(), 2) << " | " << fmt(r.cpu_stages.vertex_ms, 3)
-           << " | " << fmt(r.cpu_stages.setup_ms, 3) << " | " << fmt(r.cpu_stages.raster_ms, 3) << " | "
-           << fmt(r.cpu_stages.fragment_ms, 3) << " | " << fmt(r.cpu_stages.output_ms, 3) << " |\n";
+           << fixed(r.gl.fps(), 1) << " | " << fixed(r.cpu.fps() / r.gl.fps(), 2) << " | " << short_number(r.cpu_stages.vertex_ms, 3)
+           << " | " << short_number(r.cpu_stages.setup_ms, 3) << " | " << short_number(r.cpu_stages.raster_ms, 3) << " | "
+           << short_number(r.cpu_stages.fragment_ms, 3) << " | " << short_number(r.cpu_stages.output_ms, 3) << " |\n";
     return md.str();
 }
 
@@ -74,9 +70,9 @@ std::string markdown(const std::vector<SceneComparison>& results, const std::str
        << "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n";
     for (const auto& c : results)
         md << "| " << c.scene << " | " << (c.pass() ? "pass" : "**FAIL**") << " | " << c.coverage_mismatch
-           << " | " << fmt(c.metrics.identical_fraction_8bit) << " | " << c.metrics.max_diff_8bit << " | "
-           << fmt(c.metrics.identical_fraction_float) << " | " << fmt(c.metrics.max_rel_diff_float, 3)
-           << " | " << fmt(c.cpu_ms, 3) << " | " << fmt(c.gl_ms, 3) << " |\n";
+           << " | " << short_number(c.metrics.identical_fraction_8bit, 6) << " | " << c.metrics.max_diff_8bit << " | "
+           << short_number(c.metrics.identical_fraction_float, 6) << " | " << short_number(c.metrics.max_rel_diff_float, 3)
+           << " | " << short_number(c.cpu_ms, 3) << " | " << short_number(c.gl_ms, 3) << " |\n";
     for (const auto& c : results)
         for (const auto& f : c.failures) md << "\n- " << c.scene << ": " << f;
     md << "\n";

@@ -27,6 +27,7 @@
 #include "app/commands.h"
 #include "app/profile_exact.h"
 #include "app/profile_quality.h"
+#include "app/short_number.h"
 #include "app/svg_chart.h"
 #include "image/compare.h"
 #include "image/image_io.h"
@@ -113,11 +114,6 @@ std::vector<std::string> overrides_of(const std::vector<std::string>& common, co
     return o;
 }
 
-std::string num(double v, int precision = 3) {
-    std::ostringstream s;
-    s << std::setprecision(precision) << v;
-    return s.str();
-}
 
 }  // namespace
 
@@ -188,19 +184,19 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
        << frames << "` on `" << scene_name << "`: every gather setting on the CPU (" << common.threads
        << " threads) against the exact image, the convolution of the light's spot and half-plane with the "
           "material's profile in double precision (tabulated against distance, read linearly: worst table error "
-       << num(exact.table_error, 2) << " of the profile's total; " << num(exact_s, 3)
+       << short_number(exact.table_error, 2) << " of the profile's total; " << short_number(exact_s, 3)
        << " s to build). Time: median CPU frame (all passes) over " << frames
        << " rounds, the settings interleaved. Error: 8-bit RGB steps over the interior, the pixels at least "
-       << num(exact.margin_mm) << " mm inside the slab (where its edge takes less than a thousandth of the "
+       << short_number(exact.margin_mm) << " mm inside the slab (where its edge takes less than a thousandth of the "
           "profile's total); the band nearer the edges apart (the slab is finite, the convolution's plane is not). "
-          "The gather's reach: " << num(exact.reach_mm) << " mm. Settings are `pattern samples @texture size`. **bold**: no other setting "
+          "The gather's reach: " << short_number(exact.reach_mm) << " mm. Settings are `pattern samples @texture size`. **bold**: no other setting "
           "is both faster and more accurate (interior RMS).\n\n";
     md << "Cheapest setting with 99 % of the interior pixels within one 8-bit step: "
-       << (cheapest ? "`" + cheapest->setting.label() + "` (" + num(cheapest->median_ms) + " ms)" : std::string("none"))
+       << (cheapest ? "`" + cheapest->setting.label() + "` (" + short_number(cheapest->median_ms) + " ms)" : std::string("none"))
        << ". Images: [exact](profile-sweep-exact.png), [most accurate setting](profile-sweep-best.png) (`"
        << best->setting.label() << "`), [their difference](profile-sweep-best-heat.png).\n\n";
     md << "Against the physics: the same interior against the exact image of the material's Monte Carlo profile ("
-       << num(mc_document["material"]["mc_r_max_mm"].get<double>()) << " mm of bins): the model's error joins the "
+       << short_number(mc_document["material"]["mc_r_max_mm"].get<double>()) << " mm of bins): the model's error joins the "
           "gather's, and no sample count takes the image below it.\n\n";
     md << "| setting | CPU ms | interior RMS / max (8-bit) | interior pixels > 1 step | interior rel. RMS (float) | "
           "edge band RMS / max | edge band > 1 step | interior RMS / > 1 step against Monte Carlo |\n"
@@ -224,11 +220,11 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
             << r->edge_band.rms << ',' << r->edge_band.max << ',' << r->edge_band.over_1lsb << ',' << r->undominated << ','
             << r->physics.rms << ',' << r->physics.over_1lsb << '\n';
         const std::string name = r->undominated ? "**" + s.label() + "**" : s.label();
-        md << "| " << name << " | " << num(r->median_ms) << " | " << num(r->interior.rms) << " / "
-           << num(r->interior.max) << " | " << num(100 * r->interior.over_1lsb) << " % | " << num(r->interior.rel_rms)
-           << " | " << num(r->edge_band.rms) << " / " << num(r->edge_band.max) << " | "
-           << num(100 * r->edge_band.over_1lsb) << " % | " << num(r->physics.rms) << " / "
-           << num(100 * r->physics.over_1lsb) << " % |\n";
+        md << "| " << name << " | " << short_number(r->median_ms) << " | " << short_number(r->interior.rms) << " / "
+           << short_number(r->interior.max) << " | " << short_number(100 * r->interior.over_1lsb) << " % | " << short_number(r->interior.rel_rms)
+           << " | " << short_number(r->edge_band.rms) << " / " << short_number(r->edge_band.max) << " | "
+           << short_number(100 * r->edge_band.over_1lsb) << " % | " << short_number(r->physics.rms) << " / "
+           << short_number(100 * r->physics.over_1lsb) << " % |\n";
     }
     Chart chart;
     chart.title = "Diffusion-profile gather: image error against CPU time";

@@ -11,22 +11,13 @@
 #include "app/backends.h"
 #include "app/commands.h"
 #include "app/profile_quality.h"
+#include "app/short_number.h"
 #include "image/image_io.h"
 #include "scene/input_error.h"
 #include "scene/profile_material.h"
 #include "scene/scene.h"
 
 namespace st {
-
-namespace {
-
-std::string num(double v, int precision = 3) {
-    std::ostringstream s;
-    s << std::setprecision(precision) << v;
-    return s.str();
-}
-
-}  // namespace
 
 int cmd_sweep_quality(const std::vector<std::string>& scene_names, const std::string& out_dir, int frames,
                       const CommonOptions& common) {
@@ -52,7 +43,7 @@ int cmd_sweep_quality(const std::vector<std::string>& scene_names, const std::st
        << frames << "`, CPU, " << common.threads
        << " threads. Reference: the scene's material with its Monte Carlo profile, gathered with " << kReferenceSamples
        << " samples, its bins reaching 7 diffusion lengths 1 / sigma_tr of the material's most penetrating "
-          "channel (at least 20 mm). Budget: at most " << num(100 * kOverBudgetShare)
+          "channel (at least 20 mm). Budget: at most " << short_number(100 * kOverBudgetShare)
        << " % of the object's pixels more than one 8-bit step off the reference in any channel. Candidates in order of "
           "cost (fewer samples first; at equal samples dipole, then multipole, then layered, by profile build time; "
           "the Monte Carlo profile with fewer samples only when no diffusion model meets the budget); "
@@ -86,16 +77,16 @@ int cmd_sweep_quality(const std::vector<std::string>& scene_names, const std::st
                 continue;
             }
             const bool chosen = int(i) == c.chosen;
-            tried << (chosen ? "**" : "") << t.model << ' ' << t.samples << " (" << num(100 * t.over_budget, 2)
-                  << " %, " << num(t.p99) << " / " << num(t.max) << ")" << (chosen ? "**" : "");
+            tried << (chosen ? "**" : "") << t.model << ' ' << t.samples << " (" << short_number(100 * t.over_budget, 2)
+                  << " %, " << short_number(t.p99) << " / " << short_number(t.max) << ")" << (chosen ? "**" : "");
             csv << s.name << ',' << t.model << ',' << t.samples << ',' << t.frame_ms << ',' << t.over_budget << ','
                 << t.p99 << ',' << t.max << ',' << t.within << ',' << chosen << ",\"" << t.build_source << "\"\n";
         }
         const std::string choice = c.chosen < 0 ? "none within budget: mc " + std::to_string(kReferenceSamples)
                                                 : c.model() + " " + std::to_string(c.samples());
         md << "| " << s.name << " | " << choice << " | "
-           << (c.chosen < 0 ? num(c.reference_ms) : num(c.tried[size_t(c.chosen)].frame_ms)) << " | "
-           << num(c.reference_ms) << " (" << num(c.reference_reach_mm) << ") | " << tried.str() << " |\n";
+           << (c.chosen < 0 ? short_number(c.reference_ms) : short_number(c.tried[size_t(c.chosen)].frame_ms)) << " | "
+           << short_number(c.reference_ms) << " (" << short_number(c.reference_reach_mm) << ") | " << tried.str() << " |\n";
         std::cerr << "sweep profile-quality: " << s.name << ": " << choice << "\n";
     }
     md << "\nEach candidate's profile build (model, source, time; not in any frame) is in the CSV's last column.\n";

@@ -21,6 +21,7 @@
 #include "app/backends.h"
 #include "app/commands.h"
 #include "app/relief_exact.h"
+#include "app/short_number.h"
 #include "app/svg_chart.h"
 #include "image/compare.h"
 #include "image/image_io.h"
@@ -170,11 +171,6 @@ void measure_hits(Result& r, const Image& hits, const Image& ref_hits, int map_s
     r.depth_mean = depth_sum / n;
 }
 
-std::string num(double v, int precision = 3) {
-    std::ostringstream s;
-    s << std::setprecision(precision) << v;
-    return s.str();
-}
 
 }  // namespace
 
@@ -206,7 +202,7 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
     std::vector<Scene> scenes;
     for (double angle : angles) {
         std::vector<std::string> overrides = common.overrides;
-        overrides.push_back("view.angle_deg=" + num(angle));
+        overrides.push_back("view.angle_deg=" + short_number(angle));
         if (angle > 60) overrides.push_back("view.horizon_distance=6");
         scenes.push_back(load_scene("relief-mapping", overrides));
         if (scenes.back().frame.passes.front().draws.front().fragment != "relief_mapping")
@@ -228,7 +224,7 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
         const Image ref_image = exact_renderer.render(exact);
         const Image ref_hits = exact_renderer.render(hit_frame(exact));
         const Image converged = backends.render(Backend::Cpu, with_setting(scene.frame, kConverged)).image;
-        const std::string stem = out_dir + "/relief-sweep-" + num(angle) + "deg";
+        const std::string stem = out_dir + "/relief-sweep-" + short_number(angle) + "deg";
         write_png(stem + "-exact.png", ref_image);
         write_png(stem + "-converged.png", converged);
         const std::vector<uint8_t> heat = heat_map(converged, ref_image);
@@ -268,16 +264,16 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
                 cheapest_converged = &r;
         }
         auto named = [](const Result* r) {
-            return r ? "`" + r->setting.label() + "` (" + num(r->median_ms) + " ms)" : std::string("none");
+            return r ? "`" + r->setting.label() + "` (" + short_number(r->median_ms) + " ms)" : std::string("none");
         };
-        md << "\n## View angle " << num(angle) << " degrees\n\n";
+        md << "\n## View angle " << short_number(angle) << " degrees\n\n";
         md << "Cheapest setting whose image keeps 99 % of the pixels within one 8-bit step of the exact image: "
            << named(cheapest) << "; of the converged search's (`" << kConverged.label() << "`, itself "
-           << num(floor.rms) << " steps RMS and " << num(100 * floor.over_1lsb)
+           << short_number(floor.rms) << " steps RMS and " << short_number(100 * floor.over_1lsb)
            << " % of pixels more than a step from the exact image): " << named(cheapest_converged)
-           << ". Table 1's setting is `16 / 6 / secant`. Images: [exact](relief-sweep-" << num(angle)
-           << "deg-exact.png), [converged search](relief-sweep-" << num(angle)
-           << "deg-converged.png), [their difference](relief-sweep-" << num(angle) << "deg-converged-heat.png).\n\n";
+           << ". Table 1's setting is `16 / 6 / secant`. Images: [exact](relief-sweep-" << short_number(angle)
+           << "deg-exact.png), [converged search](relief-sweep-" << short_number(angle)
+           << "deg-converged.png), [their difference](relief-sweep-" << short_number(angle) << "deg-converged-heat.png).\n\n";
         md << "| setting | CPU ms | texel err mean / p99 / max | depth err mean / max | image RMS / p99.9 / max "
               "(8-bit) | pixels > 1 step | vs converged: RMS, pixels > 1 step |\n| --- | --- | --- | --- | --- | --- | --- |\n";
         ChartSeries fixed_secant{"linear+binary+secant", "#1f77b4", {}, {}, false, 2.5},
@@ -304,21 +300,21 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
                                 (s.linear == 16 && s.min_linear == 0 && s.binary == 6 && s.secant);
             if (!listed) continue;
             const std::string name = r->undominated ? "**" + s.label() + "**" : s.label();
-            md << "| " << name << " | " << num(r->median_ms) << " | " << num(r->texel_mean) << " / "
-               << num(r->texel_p99) << " / " << num(r->texel_max) << " | " << num(r->depth_mean) << " / "
-               << num(r->depth_max) << " | " << num(r->image.rms) << " / " << num(r->image.p999) << " / "
-               << num(r->image.max) << " | " << num(100 * r->image.over_1lsb) << " % | " << num(r->converged.rms) << ", " << num(100 * r->converged.over_1lsb) << " % |\n";
+            md << "| " << name << " | " << short_number(r->median_ms) << " | " << short_number(r->texel_mean) << " / "
+               << short_number(r->texel_p99) << " / " << short_number(r->texel_max) << " | " << short_number(r->depth_mean) << " / "
+               << short_number(r->depth_max) << " | " << short_number(r->image.rms) << " / " << short_number(r->image.p999) << " / "
+               << short_number(r->image.max) << " | " << short_number(100 * r->image.over_1lsb) << " % | " << short_number(r->converged.rms) << ", " << short_number(100 * r->converged.over_1lsb) << " % |\n";
         }
         Chart chart;
-        chart.title = "Relief mapping at " + num(angle) + " degrees: image error against CPU time";
+        chart.title = "Relief mapping at " + short_number(angle) + " degrees: image error against CPU time";
         chart.x_label = "CPU frame, ms (median)";
         chart.y_label = "image RMS error, 8-bit steps (floored at 1e-3)";
         chart.log_x = chart.log_y = true;
         chart.series = {fixed_plain, fixed_secant, scaled, front};
-        const std::string svg = "relief-sweep-" + num(angle) + "deg.svg";
+        const std::string svg = "relief-sweep-" + short_number(angle) + "deg.svg";
         write_text_file(out_dir + "/" + svg, chart.svg());
-        md << "\n![" << num(angle) << " degrees](" << svg << ")\n";
-        std::cerr << "sweep relief: " << num(angle) << " degrees done\n";
+        md << "\n![" << short_number(angle) << " degrees](" << svg << ")\n";
+        std::cerr << "sweep relief: " << short_number(angle) << " degrees done\n";
     }
     write_text_file(out_dir + "/relief-sweep.csv", csv.str());
     write_text_file(out_dir + "/relief-sweep.md", md.str());
