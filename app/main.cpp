@@ -144,6 +144,18 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 100000));
     add_common(report, common);
 
+    // An empty value is no number (CLI11 would take it as 0): every numeric
+    // option of every command checks that its value parses as one.
+    const CLI::Validator not_empty(
+        [](std::string& value) { return value.empty() ? std::string("an empty value is not a number") : std::string(); },
+        "", "NOT_EMPTY");
+    for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+        for (CLI::Option* option : sub->get_options()) {
+            const std::string type = option->get_type_name();
+            if (type.rfind("INT", 0) == 0 || type.rfind("UINT", 0) == 0 || type.rfind("FLOAT", 0) == 0)
+                option->check(not_empty);
+        }
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -77,6 +77,14 @@ Image read_image(const std::string& path, Metadata* metadata) {
     if (!in) throw std::runtime_error("cannot read " + path + ": " + OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.nchannels < 1) throw std::runtime_error("cannot read " + path + ": no channels");
+    // The header's size is checked before anything is allocated for it: a
+    // corrupt or hostile header may claim gigabytes.
+    if (spec.width < 1 || spec.height < 1 || spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
+        spec.nchannels > 64 || spec.depth > 1)
+        throw std::runtime_error("cannot read " + path + ": its header says " + std::to_string(spec.width) + "x" +
+                                 std::to_string(spec.height) + "x" + std::to_string(spec.depth) + " with " +
+                                 std::to_string(spec.nchannels) + " channels; images up to " +
+                                 std::to_string(kMaxImageSide) + " pixels a side and 64 channels are read");
     Image image(spec.width, spec.height);
     std::vector<float> raw(size_t(spec.width) * spec.height * spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, raw.data()))

@@ -20,6 +20,9 @@ void write_png(const std::string& path, const Image& image);
 // An 8-bit RGB(A) PNG from bytes already converted (heat maps).
 void write_png_bytes(const std::string& path, int width, int height, int channels,
                      const unsigned char* bytes);
+// read_image refuses a file whose header claims more than this on a side
+// (the largest scene is 8192 a side), before allocating for it.
+inline constexpr int kMaxImageSide = 8192;
 // Reads any image OpenImageIO reads as float RGBA (missing alpha = 1).
 // Throws std::runtime_error with one line on failure.
 Image read_image(const std::string& path, Metadata* metadata = nullptr);

@@ -10,6 +10,24 @@ namespace st {
 
 namespace {
 
+template <class Text> nlohmann::json parse_bounded(Text& text, const std::string& what) {
+    const nlohmann::json::parser_callback_t bound = [&](int depth, nlohmann::json::parse_event_t,
+                                                        nlohmann::json&) {
+        if (depth > kMaxJsonDepth)
+            throw InputError(what + ": nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+        return true;
+    };
+    return nlohmann::json::parse(text, bound, false);
+}
+
+}  // namespace
+
+nlohmann::json parse_json(std::istream& text, const std::string& what) { return parse_bounded(text, what); }
+nlohmann::json parse_json(const std::string& text, const std::string& what) { return parse_bounded(text, what); }
+
+
+namespace {
+
 std::string format_range(double lo, double hi) {
     std::ostringstream s;
     s << "[" << lo << ", " << hi << "]";

@@ -5,6 +5,7 @@
 // so a typo in a scene file is an error, not a silent default.
 #pragma once
 
+#include <istream>
 #include <optional>
 #include <set>
 #include <string>
@@ -13,6 +14,15 @@
 #include <nlohmann/json.hpp>
 
 namespace st {
+
+// JSON text parsed as nlohmann::json::parse(text, nullptr, false) parses it
+// (a discarded value when malformed), but refusing nesting deeper than
+// kMaxJsonDepth with an InputError that names `what`: no scene, layer file
+// or --set value needs more than a handful of levels, and the bound keeps
+// every later walk of the document (copies, comparisons, dumps) shallow.
+inline constexpr int kMaxJsonDepth = 64;
+nlohmann::json parse_json(std::istream& text, const std::string& what);
+nlohmann::json parse_json(const std::string& text, const std::string& what);
 
 class JsonReader {
 public:

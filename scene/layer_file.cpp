@@ -14,7 +14,7 @@ namespace st {
 std::vector<optics::LayerSpec> read_layer_file(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw InputError("cannot read layers file " + path);
-    const nlohmann::json doc = nlohmann::json::parse(in, nullptr, false);
+    const nlohmann::json doc = parse_json(in, path);
     if (doc.is_discarded()) throw InputError(path + ": malformed JSON");
     return parse_layers(doc, path);
 }

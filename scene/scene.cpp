@@ -53,7 +53,7 @@ void apply_override(nlohmann::json& document, const std::string& assignment) {
     if (eq == std::string::npos || eq == 0)
         throw InputError("--set expects PATH=VALUE, got '" + assignment + "'");
     const std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
-    nlohmann::json value = nlohmann::json::parse(text, nullptr, false);
+    nlohmann::json value = parse_json(text, "--set " + path);
     if (value.is_discarded()) value = text;
 
     nlohmann::json* node = &document;
@@ -66,8 +66,11 @@ void apply_override(nlohmann::json& document, const std::string& assignment) {
         if (node->is_array()) {
             if (!std::all_of(key.begin(), key.end(), ::isdigit))
                 throw InputError("--set: '" + key + "' in '" + path + "' must be an array index");
-            const size_t i = std::stoul(key);
-            if (i >= node->size()) throw InputError("--set: index " + key + " out of range in '" + path + "'");
+            // At most nine digits: std::stoul of a longer one may overflow.
+            const size_t i = key.size() <= 9 ? std::stoul(key) : node->size();
+            if (i >= node->size())
+                throw InputError("--set: index " + key + " in '" + path + "' is beyond the array's " +
+                                 std::to_string(node->size()) + " entries");
             node = &(*node)[i];
         } else if (node->is_object()) {
             if (!last && !node->contains(key))
@@ -92,7 +95,7 @@ Scene load_scene(const std::string& name_or_path, const std::vector<std::string>
         if (is_path) throw InputError("cannot read scene file " + path.string());
         throw InputError("unknown scene '" + name_or_path + "' (shadertwin list shows the built-in ones)");
     }
-    nlohmann::json document = nlohmann::json::parse(in, nullptr, false);
+    nlohmann::json document = parse_json(in, path.string());
     if (document.is_discarded()) throw InputError(path.string() + ": malformed JSON");
     if (!document.is_object()) throw InputError(path.string() + ": a scene must be a JSON object");
     for (const std::string& o : overrides) apply_override(document, o);

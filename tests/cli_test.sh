@@ -126,6 +126,25 @@ for line in sys.stdin:
     expect_bad_input "profile: a bend past 340 degrees" "$bin" render profile-leaf-front --set geometry.bend_deg=400
     expect_bad_input "profile: a freckle that takes all of a channel" "$bin" render profile-skin-head-textured \
       --set 'albedo.strength=[1,0.5,0.5]'
+    # Issue 12's classes: nesting beyond 64 levels (a --set value, a scene
+    # file), an array index beyond its array (however long), an empty number,
+    # an image whose header claims more than we read.
+    deep=$(python3 -c "print('[' * 100 + ']' * 100)")
+    expect_bad_input "a --set value nested 100 deep" "$bin" render triangles-basic --set "triangles.0.colour=$deep"
+    python3 -c 'import json,sys; d = json.load(open(sys.argv[1])); d["description"] = "x"; t = json.dumps(d); open(sys.argv[2], "w").write(t[:-1] + ", \"x\": " + "[" * 200000 + "]" * 200000 + "}")' \
+      "$(dirname "$0")/../scenes/triangles-basic.json" "$work/deep.json"
+    expect_bad_input "a scene nested 200000 deep" "$bin" render "$work/deep.json"
+    expect_bad_input "an index of 20 digits" "$bin" render triangles-basic --set 'triangles.99999999999999999999.colour=1'
+    expect_bad_input "an empty number" "$bin" slab --model multipole --sigma-a 0.1 --sigma-s '' --thickness 1
+    expect_bad_input "an empty thread count" "$bin" render triangles-basic --threads ''
+    python3 - "$work/huge.png" <<'PY'
+import struct, sys, zlib
+def chunk(t, d): return struct.pack(">I", len(d)) + t + d + struct.pack(">I", zlib.crc32(t + d) & 0xffffffff)
+ihdr = struct.pack(">IIBBBBB", 20000, 20000, 8, 6, 0, 0, 0)
+open(sys.argv[1], "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(b"\0" * 100)) + chunk(b"IEND", b""))
+PY
+    expect_bad_input "an image claiming 20000x20000" "$bin" diff "$work/huge.png" "$work/huge.png"
+    grep -q "20000x20000" "$work/stderr" || fail "the huge image's refusal should give its size"
     # A profile scene's own mesh (scene/mesh_file.h): the irradiance pass needs its layout.
     python3 - "$work" <<'PY'
 import json, sys
