@@ -8,8 +8,9 @@
 
 #include "app/bench.h"
 #include "app/commands.h"
-#include "raster/cpu_renderer.h"
+#include "app/json_text.h"
 #include "kernels/registry.h"
+#include "raster/cpu_renderer.h"
 
 namespace st {
 
@@ -31,7 +32,7 @@ int cmd_bench(const std::vector<std::string>& names, int frames, bool json, bool
             std::fprintf(stderr, "bench: %zu/%zu %s\n", i + 1, scenes.size(), scenes[i].name.c_str());
         const BenchResult r = bench_scene(scenes[i], backends, frames, std::max(2, frames / 10), one_thread.get());
         if (json) {
-            std::cout << bench_json(r, Backend::Cpu).dump() << "\n" << bench_json(r, Backend::Gl).dump() << std::endl;
+            std::cout << json_text(bench_json(r, Backend::Cpu)) << "\n" << json_text(bench_json(r, Backend::Gl)) << std::endl;
             continue;
         }
         char size[32], cpu_ms[64], gl_ms[64];

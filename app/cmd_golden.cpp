@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/json_text.h"
 #include "app/backends.h"
 #include "app/commands.h"
 #include "image/image_io.h"
@@ -58,7 +59,7 @@ int cmd_golden(const std::string& action, const std::vector<std::string>& names_
         }
     }
     if (action == "update") {
-        write_text_file(golden_file(), golden.dump(2) + "\n");
+        write_text_file(golden_file(), json_text(golden, 2) + "\n");
         std::cout << "updated " << changed.size() << " golden hashes (" << scenes.size() << " scenes)\n";
         return 0;
     }

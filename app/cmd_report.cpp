@@ -7,6 +7,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/json_text.h"
 #include "app/backends.h"
 #include "app/bench.h"
 #include "app/commands.h"
@@ -104,7 +105,7 @@ std::string html(const std::vector<SceneComparison>& results, const std::string&
         const nlohmann::json j = to_json(c);
         for (const auto& [key, value] : j.items())
             if (key != "failures" && key != "scene" && key != "outputs")
-                h << "<tr><th>" << html_escape(key) << "</th><td>" << html_escape(value.dump()) << "</td></tr>";
+                h << "<tr><th>" << html_escape(key) << "</th><td>" << html_escape(json_text(value)) << "</td></tr>";
         h << "</table>";
         // Each named output (a render target's level) as the image is shown.
         for (const auto& o : c.outputs) {

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/json_text.h"
 #include "app/commands.h"
 #include "scene/layer_file.h"
 #include "app/profile_table.h"
@@ -244,7 +245,7 @@ int slab_monte_carlo(const optics::Slab& s, const SlabOptions& o) {
                         {"seed", o.seed}};
     require_finite(j);
     if (o.json) {
-        std::cout << j.dump() << std::endl;
+        std::cout << json_text(j) << std::endl;
     } else {
         std::cout << std::setprecision(6) << "R " << r.R << " +- " << r.R_stderr << "\nT " << r.T << " +- "
                   << r.T_stderr << "\nT_direct " << r.T_direct << "\nspecular " << r.specular << "\n";
@@ -271,7 +272,7 @@ int cmd_slab(const SlabOptions& o) {
             }
             require_finite(j);
             if (o.json) {
-                std::cout << j.dump() << std::endl;
+                std::cout << json_text(j) << std::endl;
             } else {
                 std::cout << std::setprecision(6);
                 for (const char* key : {"R", "T", "T_direct", "R_stderr", "T_stderr"})
@@ -302,7 +303,7 @@ int cmd_slab(const SlabOptions& o) {
         }
         require_finite(j);
         if (o.json) {
-            std::cout << j.dump() << std::endl;
+            std::cout << json_text(j) << std::endl;
         } else {
             std::cout << std::setprecision(6);
             for (const char* key : {"R", "T", "T_direct", "profile_cut"})
@@ -340,7 +341,7 @@ int cmd_slab(const SlabOptions& o) {
     }
     require_finite(j);
     if (o.json) {
-        std::cout << j.dump() << std::endl;
+        std::cout << json_text(j) << std::endl;
     } else {
         std::cout << std::setprecision(6) << "R " << m.total_reflectance() << "\nT " << m.total_transmittance()
                   << "\nT_direct " << t_direct << "\ndipole_pairs " << m.dipoles() << "\n";

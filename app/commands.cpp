@@ -7,6 +7,7 @@
 
 #include "app/backends.h"
 #include "app/comparison.h"
+#include "app/json_text.h"
 #include "app/provenance.h"
 #include "image/image_io.h"
 #include "scene/scene.h"
@@ -92,7 +93,7 @@ int cmd_render(const std::vector<std::string>& names, const std::string& backend
             j["stages"] = {{"vertex", r.stages.vertex_ms},       {"setup_binning", r.stages.setup_ms},
                            {"rasterization", r.stages.raster_ms}, {"fragment", r.stages.fragment_ms},
                            {"blend_output", r.stages.output_ms}};
-        std::cout << j.dump() << std::endl;
+        std::cout << json_text(j) << std::endl;
     }
     return 0;
 }
@@ -106,7 +107,7 @@ int cmd_compare(const std::vector<std::string>& names, const std::string& out_di
     for (const Scene& scene : scenes) {
         const SceneComparison c = compare_scene(scene, backends, out_dir);
         all_pass &= c.pass();
-        if (json) std::cout << to_json(c).dump() << std::endl;
+        if (json) std::cout << json_text(to_json(c)) << std::endl;
         else print_human(c);
     }
     return all_pass ? 0 : 1;
@@ -129,9 +130,9 @@ int cmd_diff(const std::string& a_path, const std::string& b_path, const std::st
     j["pass"] = failures.empty();
     j["failures"] = failures;
     if (json) {
-        std::cout << j.dump() << std::endl;
+        std::cout << json_text(j) << std::endl;
     } else {
-        for (const auto& [key, value] : j.items()) std::cout << key << " " << value << "\n";
+        for (const auto& [key, value] : j.items()) std::cout << key << " " << json_text(value) << "\n";
     }
     return failures.empty() ? 0 : 1;
 }

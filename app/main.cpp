@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/error_line.h"
 #include "app/profile_quality.h"
 #include "scene/input_error.h"
 
@@ -161,7 +162,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::cerr << "shadertwin: " << e.what() << "\n";
+        std::cerr << "shadertwin: " << st::error_line(e.what()) << "\n";
         return 2;
     }
 
@@ -199,7 +200,7 @@ int main(int argc, char** argv) {
         std::cerr << "shadertwin: no command given (try --help)\n";
         return 2;
     } catch (const std::exception& e) {
-        std::cerr << "shadertwin: " << e.what() << "\n";
+        std::cerr << "shadertwin: " << st::error_line(e.what()) << "\n";
         return 2;
     }
 }

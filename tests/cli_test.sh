@@ -145,6 +145,20 @@ open(sys.argv[1], "wb").write(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chun
 PY
     expect_bad_input "an image claiming 20000x20000" "$bin" diff "$work/huge.png" "$work/huge.png"
     grep -q "20000x20000" "$work/stderr" || fail "the huge image's refusal should give its size"
+    # The user's strings in a message: escaped, and cut short.
+    expect_bad_input "a newline in a --set value" "$bin" render triangles-basic --set "kind=$(printf 'a\nb')"
+    expect_bad_input "a 100000-character kind" "$bin" render triangles-basic --set "kind=$(python3 -c "print('x' * 100000)")"
+    [ "$(wc -c <"$work/stderr")" -lt 1000 ] || fail "a 100000-character kind: the line should be cut short"
+    # A file name that is not UTF-8 (a Linux name is any bytes): the JSON line
+    # carries U+FFFD for the bad byte, and the command succeeds whole.
+    odd="$work/tri$(printf '\xff').json"
+    cp "$(dirname "$0")/../scenes/triangles-basic.json" "$odd"
+    "$bin" render "$odd" --backend cpu --out "$work/odd" >"$work/odd.json" || fail "a non-UTF-8 scene name: exit $?"
+    python3 -c 'import json,sys; j = json.load(open(sys.argv[1])); assert "\ufffd" in j["scene"], j["scene"]' "$work/odd.json" ||
+      fail "a non-UTF-8 scene name: not one JSON line naming it"
+    "$bin" diff "$work/odd/tri$(printf '\xff').cpu.exr" "$work/odd/tri$(printf '\xff').cpu.exr" --json >"$work/odd-diff.json" ||
+      fail "diff of non-UTF-8 names"
+    python3 -c 'import json,sys; json.load(open(sys.argv[1]))' "$work/odd-diff.json" || fail "diff of non-UTF-8 names: not JSON"
     # A profile scene's own mesh (scene/mesh_file.h): the irradiance pass needs its layout.
     python3 - "$work" <<'PY'
 import json, sys
