@@ -6,12 +6,12 @@
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
-#include "app/json_text.h"
 #include "app/commands.h"
-#include "scene/layer_file.h"
+#include "app/json_text.h"
 #include "app/profile_table.h"
 #include "optics/diffuse_fresnel.h"
 #include "optics/layered.h"
@@ -20,6 +20,7 @@
 #include "optics/rough_surface.h"
 #include "raster/stage_times.h"
 #include "scene/input_error.h"
+#include "scene/layer_file.h"
 
 namespace st {
 
@@ -37,14 +38,20 @@ void require_finite(const nlohmann::json& j, const std::string& key = "result") 
     }
 }
 
+std::vector<std::string>& pending_notes() {
+    static std::vector<std::string> notes;
+    return notes;
+}
+
 // The options a single slab and a stack share.
 // An option that does nothing for the chosen model is not ignored silently.
 // Where the one command line allows it with any model (a script may
-// pass --photons to all three), it gets a one-line note on stderr; options
-// of stacks given without a stack are refused.
+// pass --photons to all three), it gets a note, printed once the command has
+// succeeded (take_slab_notes): a command that then refuses its input says
+// only that; options of stacks given without a stack are refused.
 void note_unused(const SlabOptions& o, std::initializer_list<const char*> names, const std::string& why) {
     for (const char* name : names)
-        if (o.given.count(name)) std::cerr << "shadertwin: note: " << name << " " << why << ", ignored\n";
+        if (o.given.count(name)) pending_notes().push_back(std::string(name) + " " + why + ", ignored");
 }
 
 void refuse(const SlabOptions& o, std::initializer_list<const char*> names, const std::string& why) {
@@ -254,6 +261,8 @@ int slab_monte_carlo(const optics::Slab& s, const SlabOptions& o) {
 }
 
 }  // namespace
+
+std::vector<std::string> take_slab_notes() { return std::exchange(pending_notes(), {}); }
 
 int cmd_slab(const SlabOptions& o) {
     if (!o.layers_file.empty()) {

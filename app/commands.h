@@ -55,6 +55,9 @@ struct SlabOptions {
     std::set<std::string> given;  // the options on the command line ("--grid"): what is not used is refused
 };
 int cmd_slab(const SlabOptions& options);
+// The notes of the last cmd_slab or cmd_profile (options the model does not
+// use), for the caller to print after the command succeeded.
+std::vector<std::string> take_slab_notes();
 int cmd_profile(const SlabOptions& options, const std::string& out, double r_max, int samples);
 
 // Where the GLSL sources and golden hashes live (set at build time).

@@ -183,8 +183,9 @@ int main(int argc, char** argv) {
             slab_options.eta_below_given =
                 std::any_of(eta_below_given.begin(), eta_below_given.end(), [](CLI::Option* o) { return o->count() > 0; });
             if (!slab_options.eta_below_given) slab_options.eta_below = slab_options.eta;
-            if (*slab) return st::cmd_slab(slab_options);
-            return st::cmd_profile(slab_options, profile_out, r_max, samples);
+            const int rc = *slab ? st::cmd_slab(slab_options) : st::cmd_profile(slab_options, profile_out, r_max, samples);
+            for (const std::string& note : st::take_slab_notes()) std::cerr << "shadertwin: note: " << note << "\n";
+            return rc;
         }
         if (*figures) return st::cmd_optics_figures(out_dir, figure_photons, figure_threads);
         if (*bench) return st::cmd_bench(scenes, frames, json, scaling, per_pass, common);

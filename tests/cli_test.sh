@@ -691,6 +691,9 @@ PY
       grep -q '"R"' "$work/stdout" || fail "slab --model $model: no result"
       grep -q "note: .* ignored" "$work/stderr" || fail "slab --model $model: unused options not noted"
     done
+    # An option both noted as unused and refused for its value: the refusal alone, one line.
+    expect_slab_error "a bad value of an unused option" --model dipole --sigma-a 1 --sigma-s 1 --thickness 1 --photons 0
+    grep -q "note:" "$work/stderr" && fail "a refused command should not also print a note"
     expect_slab_error "lossless half-space in Monte Carlo" --model mc --sigma-a 0 --sigma-s 1 --thickness inf
     expect_slab_error "eta beyond 100" --sigma-a 1 --sigma-s 1 --thickness 1 --eta 1000
     expect_slab_error "overflowing coefficient" --sigma-a 1e154 --sigma-s 1 --thickness 1
