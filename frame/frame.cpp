@@ -10,6 +10,9 @@ Frame coverage_frame(const Frame& frame) {
         for (DrawCall& draw : pass.draws) {
             draw.fragment = "coverage";
             draw.state = DrawState{};
+            // Counts, exact in the float targets (to 2^24 fragments a pixel).
+            draw.state.blend = BlendMode::Factors;
+            draw.state.factors = BlendFactors{BlendFactor::One, BlendFactor::One, BlendFactor::One, BlendFactor::One};
         }
     }
     return out;

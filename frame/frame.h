@@ -163,8 +163,9 @@ struct Frame {
 };
 
 // The coverage pass used by `compare`: every draw keeps its vertex stage but
-// gets the constant-colour fragment stage "coverage", no blending and no depth
-// test, so a pixel is non-zero exactly when some triangle covers it.
+// gets the constant-colour fragment stage "coverage" (1.0), no depth test and
+// additive blending (ONE, ONE), so a pixel holds how many fragments covered
+// it: a pixel covered twice on one side and once on the other is a mismatch.
 Frame coverage_frame(const Frame& frame);
 
 }  // namespace st

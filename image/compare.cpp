@@ -72,12 +72,12 @@ long coverage_mismatch(const Image& a, const Image& b) {
     check_sizes(a, b);
     long mismatch = 0;
     const size_t pixels = size_t(a.width) * a.height;
+    // Each pixel holds its fragment count (coverage_frame): any difference,
+    // in presence or in multiplicity, is a mismatch.
     for (size_t p = 0; p < pixels; ++p) {
-        auto covered = [p](const Image& im) {
-            const float* v = &im.rgba[p * 4];
-            return v[0] != 0.0f || v[1] != 0.0f || v[2] != 0.0f || v[3] != 0.0f;
-        };
-        mismatch += covered(a) != covered(b);
+        const float* u = &a.rgba[p * 4];
+        const float* v = &b.rgba[p * 4];
+        mismatch += !(u[0] == v[0] && u[1] == v[1] && u[2] == v[2] && u[3] == v[3]);
     }
     return mismatch;
 }

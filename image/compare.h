@@ -24,7 +24,9 @@ struct CompareMetrics {
 // (std::invalid_argument otherwise).
 CompareMetrics compare_images(const Image& a, const Image& b);
 
-// Pixels covered (any channel non-zero) in exactly one of two coverage images.
+// Pixels whose fragment counts differ between two coverage images
+// (frame/frame.h coverage_frame): covered on one side only, or a different
+// number of times.
 long coverage_mismatch(const Image& a, const Image& b);
 
 // Per pixel (rows top to bottom), 1 where some channel's unorm8 value
