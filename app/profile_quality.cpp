@@ -93,6 +93,10 @@ double reference_reach_mm(const nlohmann::json& material) {
 }
 
 double quality_budget(const nlohmann::json& document) {
+    const auto kind = document.find("kind");
+    if (kind == document.end() || !kind->is_string() || kind->get<std::string>() != "profile")
+        throw InputError("field 'quality': \"auto\" chooses a profile scene's model and samples; this scene is no "
+                         "profile scene");
     const nlohmann::json& q = document.at("quality");
     if (!q.is_string() || q.get<std::string>() != "auto")
         throw InputError("field 'quality' must be \"auto\" (the cheapest model and sample count within the budget)");
@@ -118,9 +122,6 @@ nlohmann::json with_choice(const nlohmann::json& document, const std::string& mo
 
 QualityChoice measure_quality(Backends& backends, const std::string& name, const nlohmann::json& document,
                               int frames) {
-    if (document.value("kind", "") != "profile")
-        throw InputError("field 'quality': \"auto\" chooses a profile scene's model and samples; this scene's kind is '" +
-                         document.value("kind", std::string("?")) + "'");
     QualityChoice choice;
     choice.scene = name;
     choice.budget = quality_budget(document);
@@ -209,9 +210,6 @@ void remember_quality_choice(const nlohmann::json& document, const QualityChoice
 
 void install_quality_resolver(int threads) {
     set_quality_resolver([threads](const std::string& name, nlohmann::json& document) {
-        if (document.value("kind", "") != "profile")
-            throw InputError("field 'quality': \"auto\" chooses a profile scene's model and samples; this scene's kind is '" +
-                             document.value("kind", std::string("?")) + "'");
         if (const auto cached = load_cached_record(choice_key(document))) {
             std::istringstream in(*cached);
             std::string model;

@@ -58,7 +58,7 @@ struct QualityChoice {
 };
 
 // The document's "quality_budget" (or the default); InputError for a bad
-// "quality" or budget.
+// "quality" or budget, or a scene of another kind.
 double quality_budget(const nlohmann::json& document);
 
 // Renders the candidates of a profile scene's document (its "quality"
