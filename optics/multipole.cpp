@@ -64,7 +64,7 @@ double scattered_depth_weight(double x) {
 
 }  // namespace
 
-Multipole::Multipole(const Slab& slab, int n, SourceDepth source) : slab_(slab), source_(source) {
+Multipole::Multipole(const Slab& slab, int n, SourceDepth source) : slab_(slab) {
     alpha_ = slab.albedo_reduced();
     sigma_tr_ = slab.sigma_tr();
     const double D = slab.diffusion_constant();

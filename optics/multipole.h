@@ -74,7 +74,6 @@ private:
     double series_tail(double c, double r, int n) const;
 
     Slab slab_;
-    SourceDepth source_;
     double alpha_ = 0, sigma_tr_ = 0;  // alpha_ includes the source's weight
     double z_source_ = 0, zb_top_ = 0, zb_bottom_ = 0, period_ = 0;  // mm; z_b = 2 A D
     bool whole_series_ = false;  // totals of the infinite series (converged())

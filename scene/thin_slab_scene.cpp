@@ -27,7 +27,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 // Vertex layout of the host variant: the radiance slot is rewritten per frame.
-constexpr int kHostPosition = 0, kHostRadiance = 1, kHostUv = 2, kHostNormal = 3;
+[[maybe_unused]] constexpr int kHostPosition = 0, kHostRadiance = 1, kHostUv = 2, kHostNormal = 3;
 
 class ThinSlabHostStage final : public HostStage {
 public:

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages shadertwin builds with, when any is missing.
-# Skips apt entirely when everything is already there.
+# Skips apt entirely when everything is already there. With the argument
+# `clang`, also what the sanitizer, fuzzing and second-compiler checks need
+# (scripts/check-*.sh): clang++, its sanitizer and libFuzzer runtimes, and
+# llvm-symbolizer for readable stack traces.
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config
@@ -8,6 +11,9 @@ packages=(
   libgtest-dev libbenchmark-dev libosmesa6-dev
   nlohmann-json3-dev libcli11-dev libkissfft-dev
 )
+if [ "${1:-}" = clang ]; then
+  packages+=(clang libclang-rt-14-dev llvm)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -320,6 +320,11 @@ ST_INLINE Int permute(Int table, Int idx) {
     return Int(IntV(_mm512_permutexvar_epi32(__m512i(idx.v), __m512i(table.v))));
 #elif defined(ST_SIMD_AVX2)
     return Int(IntV(_mm256_permutevar8x32_epi32(__m256i(table.v), __m256i(idx.v))));
+#elif defined(__clang__)
+    // Clang has no __builtin_shuffle with run-time indices: pick lane by lane.
+    IntV r;
+    for (int i = 0; i < kLanes; ++i) r[i] = table.v[idx.v[i] & (kLanes - 1)];
+    return Int(r);
 #else
     return Int(__builtin_shuffle(table.v, idx.v & (kLanes - 1)));
 #endif
@@ -465,6 +470,15 @@ ST_INLINE void load_rows8(const float* base, Int offset, Float (&out)[8]) {
 }
 
 // Lane i of the result is lane idx[i] of x: the quad shuffles behind dFdx.
-ST_INLINE Float shuffle(Float x, IntV idx) { return Float(__builtin_shuffle(x.v, idx)); }
+ST_INLINE Float shuffle(Float x, IntV idx) {
+#if defined(__clang__)
+    // Clang has no __builtin_shuffle; it folds this loop when idx is a constant.
+    FloatV r;
+    for (int i = 0; i < kLanes; ++i) r[i] = x.v[idx[i] & (kLanes - 1)];
+    return Float(r);
+#else
+    return Float(__builtin_shuffle(x.v, idx));
+#endif
+}
 
 }  // namespace st::simd

@@ -26,6 +26,11 @@ check() {  # check LABEL HASHES_FILE
 "$build/tests/lane_hashes" 3 >"$build/lane_hashes.main"
 check "this build" "$build/lane_hashes.main"
 
+# The other widths are built with this build's compiler and sanitizers, so
+# that the sanitizer check (scripts/check-asan.sh) covers them too.
+cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$build/CMakeCache.txt"; }
+inherited=(-DCMAKE_CXX_COMPILER="$(cache_value CMAKE_CXX_COMPILER)" -DSHADERTWIN_SANITIZE="$(cache_value SHADERTWIN_SANITIZE)")
+
 for flavour in avx2 generic; do
   dir="$build/lanes-$flavour"
   flags=""
@@ -33,7 +38,7 @@ for flavour in avx2 generic; do
   # LTO off and -O1: other code generation from the same source must give
   # the same bits too. (Configured every time: it is quick, and it picks up
   # new targets in a folder left by an earlier run.)
-  cmake -S "$src" -B "$dir" -DSHADERTWIN_SIMD="$flavour" $flags -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  cmake -S "$src" -B "$dir" "${inherited[@]}" -DSHADERTWIN_SIMD="$flavour" $flags -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -DCMAKE_INTERPROCEDURAL_OPTIMIZATION=OFF >/dev/null
   cmake --build "$dir" --target lane_hashes lane_unit_tests -j "$(nproc)" >/dev/null
   "$dir/tests/lane_unit_tests" --gtest_brief=1 >"$dir/lane_unit_tests.out" 2>&1 ||

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# The AddressSanitizer + UndefinedBehaviorSanitizer check (CI, after
+# ./test.sh): a clang++ build with both sanitizers and the libFuzzer targets
+# in build-asan/, the whole test suite under it (every UB finding and every
+# leak of ours fails a test; Mesa's leaks: tests/sanitizers/lsan.supp), then
+# a short run of each fuzz target (FUZZ_SECONDS each, default 20).
+# See docs/reliability.md.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/install-deps.sh clang
+build=build-asan
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DSHADERTWIN_SANITIZE=address,undefined -DSHADERTWIN_FUZZ=ON >&2
+fi
+cmake --build "$build" -j "$(nproc)" >&2
+source scripts/sanitizer-env.sh
+ctest --test-dir "$build" --output-on-failure -j 2 "$@"
+fuzz/run.sh "$build" "${FUZZ_SECONDS:-20}"
