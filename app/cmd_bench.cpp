@@ -1,5 +1,6 @@
 // cmd_bench.cpp: `bench`, frames per second on both backends (app/bench.h
 // says how a frame is measured).
+#include "app/memory_budget.h"
 #include "app/pass_times.h"
 #include "scene/profile_material.h"
 #include <cstdio>
@@ -18,6 +19,7 @@ int cmd_bench(const std::vector<std::string>& names, int frames, bool json, bool
               const CommonOptions& common) {
     std::vector<Scene> scenes;
     for (const auto& n : names) scenes.push_back(load_scene(n, common.overrides));
+    check_memory(scenes, MemoryUse::BothBackends, common.max_memory);
     set_llvmpipe_threads(common.threads);
     Backends backends(common.threads, glsl_dir());
     std::unique_ptr<CpuRenderer> one_thread;

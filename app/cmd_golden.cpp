@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/memory_budget.h"
 #include "app/json_text.h"
 #include "app/backends.h"
 #include "app/commands.h"
@@ -19,6 +20,7 @@ int cmd_golden(const std::string& action, const std::vector<std::string>& names_
     const std::vector<std::string> names = names_in.empty() ? builtin_scene_names() : names_in;
     std::vector<Scene> scenes;
     for (const auto& n : names) scenes.push_back(load_scene(n, common.overrides));
+    check_memory(scenes, MemoryUse::RenderCpu, common.max_memory);
 
     nlohmann::json golden = nlohmann::json::object();
     {

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/memory_budget.h"
 #include "app/json_text.h"
 #include "app/backends.h"
 #include "app/bench.h"
@@ -131,6 +132,7 @@ std::string html(const std::vector<SceneComparison>& results, const std::string&
 int cmd_report(const std::string& out_dir, int frames, const CommonOptions& common) {
     std::vector<Scene> scenes;
     for (const auto& n : builtin_scene_names()) scenes.push_back(load_scene(n, common.overrides));
+    check_memory(scenes, MemoryUse::Compare, common.max_memory);
     std::error_code ec;
     std::filesystem::create_directories(out_dir, ec);
     if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());

@@ -12,6 +12,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/memory_budget.h"
 #include "app/backends.h"
 #include "app/commands.h"
 #include "app/svg_chart.h"
@@ -71,6 +72,7 @@ std::string fmt(double v) {
 int cmd_sweep(const std::string& technique, const std::string& out_dir, const CommonOptions& common) {
     if (technique != "thin-slab") throw std::runtime_error("no sweep for '" + technique + "' (known: thin-slab)");
     const Scene scene = load_scene("thin-slab-sweep", common.overrides);
+    check_memory({scene}, MemoryUse::Compare, common.max_memory);
     std::error_code ec;
     std::filesystem::create_directories(out_dir, ec);
     if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());

@@ -23,6 +23,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/memory_budget.h"
 #include "app/backends.h"
 #include "app/commands.h"
 #include "app/profile_exact.h"
@@ -124,6 +125,7 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
     // sweep before it writes anything.
     std::vector<Scene> scenes;
     for (const Setting& s : all) scenes.push_back(load_scene(scene_name, overrides_of(common.overrides, s)));
+    check_memory(scenes, MemoryUse::Compare, common.max_memory);
     const auto exact_start = std::chrono::steady_clock::now();
     const ProfileExact exact = exact_profile_image(scenes.front());
     const double exact_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - exact_start).count();

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/memory_budget.h"
 #include "app/backends.h"
 #include "app/commands.h"
 #include "app/profile_quality.h"
@@ -31,6 +32,7 @@ int cmd_sweep_quality(const std::vector<std::string>& scene_names, const std::st
         scenes.push_back(load_scene(n, common.overrides));
         if (scenes.back().kind != "profile") throw InputError("sweep profile-quality: '" + n + "' is not a profile scene");
     }
+    check_memory(scenes, MemoryUse::Compare, common.max_memory);
     if (!out_dir.empty()) {
         std::error_code ec;
         std::filesystem::create_directories(out_dir, ec);

@@ -18,6 +18,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/memory_budget.h"
 #include "app/backends.h"
 #include "app/commands.h"
 #include "app/relief_exact.h"
@@ -208,6 +209,7 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
         if (scenes.back().frame.passes.front().draws.front().fragment != "relief_mapping")
             throw InputError("sweep relief: field 'technique' must stay \"relief\" (the sweep measures row 2's search)");
     }
+    check_memory(scenes, MemoryUse::Compare, common.max_memory);
     std::error_code ec;
     std::filesystem::create_directories(out_dir, ec);
     if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());

@@ -1,6 +1,7 @@
 // commands.cpp: version, list, render, compare and diff.
 #include "app/commands.h"
 
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -8,6 +9,7 @@
 #include "app/backends.h"
 #include "app/comparison.h"
 #include "app/json_text.h"
+#include "app/memory_budget.h"
 #include "app/provenance.h"
 #include "image/image_io.h"
 #include "scene/scene.h"
@@ -23,11 +25,22 @@ std::string golden_file() { return SHADERTWIN_GOLDEN_FILE; }
 
 namespace {
 
-// Loads every scene first, so that bad input fails before any file is written.
-std::vector<Scene> load_all(const std::vector<std::string>& names, const CommonOptions& common) {
+// Loads every scene first, and checks that each fits in memory, so that bad
+// input fails before any file is written.
+// `estimates` gets each scene's estimated peak memory.
+std::vector<Scene> load_all(const std::vector<std::string>& names, const CommonOptions& common, MemoryUse use,
+                            std::vector<uint64_t>& estimates) {
     std::vector<Scene> scenes;
     for (const auto& n : names) scenes.push_back(load_scene(n, common.overrides));
+    estimates = check_memory(scenes, use, common.max_memory);
     return scenes;
+}
+
+// The estimate and the measured peak of one scene, for the JSON line.
+nlohmann::json memory_json(uint64_t estimate) {
+    constexpr double kMiB = 1024.0 * 1024.0;
+    return {{"estimate_mb", std::round(double(estimate) / kMiB)},
+            {"peak_mb", std::round(double(peak_resident_bytes()) / kMiB)}};
 }
 
 void make_dir(const std::string& dir) {
@@ -73,11 +86,15 @@ int cmd_list() {
 
 int cmd_render(const std::vector<std::string>& names, const std::string& backend_str,
                const std::string& out_dir, const CommonOptions& common) {
-    const auto scenes = load_all(names, common);
-    make_dir(out_dir);
     const Backend backend = backend_str == "gl" ? Backend::Gl : Backend::Cpu;
+    const MemoryUse use = backend == Backend::Gl ? MemoryUse::RenderGl : MemoryUse::RenderCpu;
+    std::vector<uint64_t> estimates;
+    const auto scenes = load_all(names, common, use, estimates);
+    make_dir(out_dir);
     Backends backends(common.threads, glsl_dir());
-    for (const Scene& scene : scenes) {
+    for (size_t i = 0; i < scenes.size(); ++i) {
+        const Scene& scene = scenes[i];
+        reset_peak_resident();
         const Rendered r = backends.render(backend, scene.frame);
         write_rendered(out_dir, scene.name, backend, r.image, backends);
         nlohmann::json j = {{"scene", scene.name},  {"backend", backend_name(backend)},
@@ -93,6 +110,7 @@ int cmd_render(const std::vector<std::string>& names, const std::string& backend
             j["stages"] = {{"vertex", r.stages.vertex_ms},       {"setup_binning", r.stages.setup_ms},
                            {"rasterization", r.stages.raster_ms}, {"fragment", r.stages.fragment_ms},
                            {"blend_output", r.stages.output_ms}};
+        j["memory"] = memory_json(estimates[i]);
         std::cout << json_text(j) << std::endl;
     }
     return 0;
@@ -100,14 +118,19 @@ int cmd_render(const std::vector<std::string>& names, const std::string& backend
 
 int cmd_compare(const std::vector<std::string>& names, const std::string& out_dir, bool json,
                 const CommonOptions& common) {
-    const auto scenes = load_all(names, common);
+    std::vector<uint64_t> estimates;
+    const auto scenes = load_all(names, common, MemoryUse::Compare, estimates);
     make_dir(out_dir);
     Backends backends(common.threads, glsl_dir());
     bool all_pass = true;
-    for (const Scene& scene : scenes) {
+    for (size_t i = 0; i < scenes.size(); ++i) {
+        const Scene& scene = scenes[i];
+        reset_peak_resident();
         const SceneComparison c = compare_scene(scene, backends, out_dir);
         all_pass &= c.pass();
-        if (json) std::cout << json_text(to_json(c)) << std::endl;
+        nlohmann::json j = to_json(c);
+        j["memory"] = memory_json(estimates[i]);
+        if (json) std::cout << json_text(j) << std::endl;
         else print_human(c);
     }
     return all_pass ? 0 : 1;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <set>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@ namespace st {
 struct CommonOptions {
     std::vector<std::string> overrides;  // --set PATH=VALUE
     int threads = 2;                     // --threads N
+    uint64_t max_memory = 0;             // --max-memory SIZE in bytes; 0: the machine's limits only
 };
 
 int cmd_version();

@@ -8,6 +8,7 @@
 
 #include "app/commands.h"
 #include "app/error_line.h"
+#include "app/memory_budget.h"
 #include "app/profile_quality.h"
 #include "scene/input_error.h"
 
@@ -18,6 +19,17 @@ void add_common(CLI::App* cmd, st::CommonOptions& common) {
     cmd->add_option("--threads", common.threads, "CPU worker threads")
         ->check(CLI::Range(1, 256))
         ->default_val(2);
+    cmd->add_option_function<std::string>(
+           "--max-memory",
+           [&common](const std::string& size) {
+               try {
+                   common.max_memory = st::parse_memory_size(size);
+               } catch (const std::exception& e) {
+                   throw CLI::ValidationError(e.what());
+               }
+           },
+           "refuse a scene whose estimated peak memory exceeds SIZE (4G, 512M); default: what the machine allows")
+        ->type_name("SIZE");
 }
 
 }  // namespace

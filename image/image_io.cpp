@@ -10,6 +10,8 @@
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
+#include "image/png_structure.h"
+#include "image/stderr_capture.h"
 #include "image/unorm8.h"
 
 namespace st {
@@ -73,8 +75,18 @@ void write_png_bytes(const std::string& path, int width, int height, int channel
 }
 
 Image read_image(const std::string& path, Metadata* metadata) {
+    // libpng prints its errors itself before OpenImageIO reports them: hold
+    // that back, so that a refused image gets one line, and ours.
+    StderrCapture library_chatter;
+    auto refuse = [&](const std::string& why) {
+        std::string line = join_lines(why);
+        if (line.empty()) line = join_lines(library_chatter.text());
+        if (line.empty()) line = "not an image OpenImageIO reads";
+        return std::runtime_error("cannot read " + path + ": " + line);
+    };
+    if (const std::string broken = png_structure_error(path); !broken.empty()) throw refuse(broken);
     auto in = OIIO::ImageInput::open(path);
-    if (!in) throw std::runtime_error("cannot read " + path + ": " + OIIO::geterror());
+    if (!in) throw refuse(OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.nchannels < 1) throw std::runtime_error("cannot read " + path + ": no channels");
     // The header's size is checked before anything is allocated for it: a
@@ -87,8 +99,7 @@ Image read_image(const std::string& path, Metadata* metadata) {
                                  std::to_string(kMaxImageSide) + " pixels a side and 64 channels are read");
     Image image(spec.width, spec.height);
     std::vector<float> raw(size_t(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, raw.data()))
-        throw std::runtime_error("cannot read " + path + ": " + in->geterror());
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, raw.data())) throw refuse(in->geterror());
     for (size_t p = 0; p < size_t(spec.width) * spec.height; ++p)
         for (int c = 0; c < 4; ++c)
             image.rgba[p * 4 + c] = c < spec.nchannels ? raw[p * spec.nchannels + c]

@@ -41,14 +41,26 @@ void Binner::run(std::vector<PreparedDraw>& draws, int width, int height, const 
     std::stable_sort(order_.begin(), order_.end(), [&](int a, int b) { return load_[size_t(a)] > load_[size_t(b)]; });
 }
 
+const SetupChunk* Binner::first_unsnappable() const {
+    for (size_t i = 0; i < used_; ++i)
+        if (chunks_[i].unsnappable) return &chunks_[i];
+    return nullptr;
+}
+
 void Binner::set_up(SetupChunk& chunk, const PreparedDraw& d, int width, int height, const Viewport& viewport) {
     chunk.triangles.clear();
     chunk.planes.clear();
     chunk.clipped.clear();
+    chunk.unsnappable = 0;
     chunk.bins.resize(size_t(tiles()));
     for (auto& bin : chunk.bins) bin.clear();
 
+    size_t triangle = 0;  // index in the draw of the triangle being set up
     auto emit = [&](const SetupVertex& a, const SetupVertex& b, const SetupVertex& c) {
+        if (!snappable(a, b, c)) {
+            if (chunk.unsnappable++ == 0) chunk.first_unsnappable = triangle;
+            return;
+        }
         SetupTriangle tri;
         if (!setup_triangle(a, b, c, d.varying_count, width, height, tri, chunk.planes)) return;
         tri.draw = chunk.draw;
@@ -62,6 +74,7 @@ void Binner::set_up(SetupChunk& chunk, const PreparedDraw& d, int width, int hei
     std::vector<ClipVertex> clipped_tris;
     const auto& idx = d.call->indices;
     for (size_t t = chunk.first * 3; t < (chunk.first + chunk.count) * 3; t += 3) {
+        triangle = t / 3;
         const uint32_t i[3] = {idx[t], idx[t + 1], idx[t + 2]};
         unsigned mask_or = 0, mask_and = ~0u;
         for (uint32_t k : i) {

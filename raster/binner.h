@@ -30,6 +30,9 @@ struct SetupChunk {
     std::vector<Plane> planes;                // SetupTriangle::first_plane indexes these
     std::vector<std::vector<uint32_t>> bins;  // [tile] -> indices into `triangles`
     std::deque<ClipVertex> clipped;           // vertices of clipped triangles (stable addresses)
+    // Triangles dropped because a window position could not be snapped
+    // (triangle_setup.h), and the index in its draw of the first of them.
+    size_t unsnappable = 0, first_unsnappable = 0;
 };
 
 class Binner {
@@ -42,6 +45,9 @@ public:
     int tiles() const { return tiles_x_ * tiles_y_; }
     size_t chunk_count() const { return used_; }
     const SetupChunk& chunk(size_t i) const { return chunks_[i]; }
+    // The first chunk (in draw order) that dropped a triangle it could not
+    // snap, or nullptr: the renderer refuses such a pass.
+    const SetupChunk* first_unsnappable() const;
     // Every tile, those with the most binned triangles first (ties by index).
     const std::vector<int>& tiles_by_load() const { return order_; }
 

@@ -168,6 +168,12 @@ void CpuRenderer::execute() {
         for (PreparedDraw& d : draws) m.run_vertex_stage(d, viewport);
         const auto t1 = Clock::now();
         m.binner.run(draws, pass.width, pass.height, viewport, m.pool);
+        if (const SetupChunk* bad = m.binner.first_unsnappable())
+            throw std::runtime_error(
+                "pass " + std::to_string(pi) + ", draw " + std::to_string(bad->draw) + ", triangle " +
+                std::to_string(bad->first_unsnappable) +
+                ": a vertex's window position is not finite (clip w at or within a few ULP of 0, or a vertex at "
+                "the clip-space origin), so it cannot be rasterized as llvmpipe would; move it off w = 0");
         const auto t2 = Clock::now();
         for (auto& ts : m.tile_shaders) ts.times = StageTimes{};
         // Busiest tiles first, so that no worker is left with a heavy tile

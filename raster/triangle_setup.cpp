@@ -32,9 +32,15 @@ EdgeFunction make_edge(int64_t ax, int64_t ay, int64_t bx, int64_t by) {
 
 }  // namespace
 
+bool snappable(const SetupVertex& v0, const SetupVertex& v1, const SetupVertex& v2) {
+    return snappable(v0.pos.x) && snappable(v0.pos.y) && snappable(v1.pos.x) && snappable(v1.pos.y) &&
+           snappable(v2.pos.x) && snappable(v2.pos.y);
+}
+
 bool setup_triangle(const SetupVertex& v0, const SetupVertex& v1, const SetupVertex& v2,
                     int varying_count, int target_width, int target_height, SetupTriangle& tri,
                     std::vector<Plane>& planes) {
+    if (!snappable(v0, v1, v2)) return false;
     const SetupVertex* v[3] = {&v0, &v1, &v2};
     int64_t x[3], y[3];
     for (int i = 0; i < 3; ++i) {

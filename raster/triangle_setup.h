@@ -37,8 +37,12 @@ struct SetupTriangle {
     uint32_t first_plane = 0;  // into the pass's plane storage: z, 1/w, then varyings
 };
 
+// True when every vertex's window x and y can be snapped (fixed_point.h);
+// setup_triangle drops a triangle for which this is false.
+bool snappable(const SetupVertex& v0, const SetupVertex& v1, const SetupVertex& v2);
+
 // Returns false when the triangle covers no pixel centre of the target
-// (zero area, or its box misses the target). On success appends
+// (zero area, or its box misses the target) or is not snappable(). On success appends
 // 2 + 4 * varying_count planes to `planes`.
 bool setup_triangle(const SetupVertex& v0, const SetupVertex& v1, const SetupVertex& v2,
                     int varying_count, int target_width, int target_height,

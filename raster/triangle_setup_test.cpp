@@ -1,6 +1,9 @@
 // triangle_setup_test.cpp: fixed-point snapping and the fill rule.
 #include "raster/triangle_setup.h"
 
+#include <cmath>
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include "raster/fixed_point.h"
@@ -104,6 +107,20 @@ TEST(TileRaster, TilesPartitionTheTriangle) {
     };
     EXPECT_EQ(count(whole), count(tiled));
     EXPECT_GT(count(whole), 1000);
+}
+
+// Issue 12: a position that cannot be snapped (not finite, or beyond
+// kMaxWindowCoord) drops the triangle instead of reaching an integer
+// conversion; one just within the limit is set up.
+TEST(Snap, UnsnappablePositionsDropTheTriangle) {
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    for (float bad : {nan, inf, -inf, std::numeric_limits<float>::max(), std::nextafter(kMaxWindowCoord, inf)}) {
+        EXPECT_FALSE(snappable(at(bad, 1.0f), at(8.0f, 1.0f), at(1.0f, 8.0f)));
+        EXPECT_TRUE(covered(at(bad, 1.0f), at(8.0f, 1.0f), at(1.0f, 8.0f)).empty());
+        EXPECT_TRUE(covered(at(1.0f, 1.0f), at(8.0f, bad), at(1.0f, 8.0f)).empty());
+    }
+    EXPECT_TRUE(snappable(at(-kMaxWindowCoord, 1.0f), at(8.0f, 1.0f), at(1.0f, 8.0f)));
+    EXPECT_FALSE(covered(at(-kMaxWindowCoord, 0.0f), at(8.0f, 0.0f), at(8.0f, 8.0f)).empty());
 }
 
 }  // namespace st

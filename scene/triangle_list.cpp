@@ -65,8 +65,9 @@ void read_triangle_list(JsonReader& scene, SceneSize size, TriangleListFormat fo
                 p.push_back(JsonReader::checked_number(positions[i][k], where + "." + std::to_string(k),
                                                        is_depth ? 0.0 : -kHuge, is_depth ? 1.0 : kHuge));
             }
-            if (!format.pixels && p.size() == 4 && p[3] == 0.0)
-                throw InputError("field '" + where + ".3' (w) must not be 0");
+            // As a float, which is what the pipeline sees: 1e-50 is 0 there.
+            if (!format.pixels && p.size() == 4 && float(p[3]) == 0.0f)
+                throw InputError("field '" + where + ".3' (w) must not be 0 (as a 32-bit float)");
             draw.indices.push_back(uint32_t(draw.vertices.vertex_count()));
             draw.vertices.data.push_back(format.pixels ? pixel_to_clip(p, size) : clip_position(p));
             draw.vertices.data.push_back(to_vec4(colours[i]));
