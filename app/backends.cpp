@@ -10,16 +10,17 @@ namespace st {
 
 const char* backend_name(Backend b) { return b == Backend::Cpu ? "cpu" : "gl"; }
 
-Backends::Backends(int threads, std::string glsl_dir) : threads_(threads), glsl_dir_(std::move(glsl_dir)) {}
+Backends::Backends(int threads, std::vector<std::string> glsl_roots)
+    : threads_(threads), glsl_roots_(std::move(glsl_roots)) {}
 Backends::~Backends() = default;
 
 CpuRenderer& Backends::cpu() {
-    if (!cpu_) cpu_ = std::make_unique<CpuRenderer>(threads_, builtin_twins());
+    if (!cpu_) cpu_ = std::make_unique<CpuRenderer>(threads_, twins());
     return *cpu_;
 }
 
 GlRenderer& Backends::gl() {
-    if (!gl_) gl_ = std::make_unique<GlRenderer>(glsl_dir_);
+    if (!gl_) gl_ = std::make_unique<GlRenderer>(glsl_roots_);
     return *gl_;
 }
 

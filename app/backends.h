@@ -36,7 +36,7 @@ struct Rendered {
 
 class Backends {
 public:
-    Backends(int threads, std::string glsl_dir);
+    Backends(int threads, std::vector<std::string> glsl_roots);
     ~Backends();
 
     Rendered render(Backend backend, const Frame& frame);
@@ -51,7 +51,7 @@ public:
 
 private:
     int threads_;
-    std::string glsl_dir_;
+    std::vector<std::string> glsl_roots_;
     std::unique_ptr<CpuRenderer> cpu_;
     std::unique_ptr<GlRenderer> gl_;
 };

@@ -1,5 +1,6 @@
 // cmd_bench.cpp: `bench`, frames per second on both backends (app/bench.h
 // says how a frame is measured).
+#include "app/tool_data.h"
 #include "app/memory_budget.h"
 #include "app/pass_times.h"
 #include "scene/profile_material.h"
@@ -21,9 +22,9 @@ int cmd_bench(const std::vector<std::string>& names, int frames, bool json, bool
     for (const auto& n : names) scenes.push_back(load_scene(n, common.overrides));
     check_memory(scenes, MemoryUse::BothBackends, common.max_memory);
     set_llvmpipe_threads(common.threads);
-    Backends backends(common.threads, glsl_dir());
+    Backends backends(common.threads, glsl_roots());
     std::unique_ptr<CpuRenderer> one_thread;
-    if (scaling) one_thread = std::make_unique<CpuRenderer>(1, builtin_twins());
+    if (scaling) one_thread = std::make_unique<CpuRenderer>(1, twins());
     const auto start = Clock::now();
     if (!json)
         std::printf("%-30s %9s %9s %9s %7s %24s %24s | %7s %7s %7s %8s %7s%s\n", "scene", "size", "cpu fps", "gl fps",

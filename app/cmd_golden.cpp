@@ -1,11 +1,15 @@
 // cmd_golden.cpp: `golden check|update`. Goldens are the CPU backend's
-// hashes, committed in tests/golden/hashes.json; they change only through
+// hashes, committed in tests/golden/hashes.json for the built-in scenes (a
+// user technique keeps its own file); they change only through
 // `golden update`.
+#include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 
 #include <nlohmann/json.hpp>
 
+#include "app/tool_data.h"
 #include "app/memory_budget.h"
 #include "app/json_text.h"
 #include "app/backends.h"
@@ -22,21 +26,26 @@ int cmd_golden(const std::string& action, const std::vector<std::string>& names_
     for (const auto& n : names) scenes.push_back(load_scene(n, common.overrides));
     check_memory(scenes, MemoryUse::RenderCpu, common.max_memory);
 
-    nlohmann::json golden = nlohmann::json::object();
-    {
-        std::ifstream in(golden_file());
+    // Each scene's hashes live in its source's golden file (scene/scene_sources.h):
+    // the built-in ones in tests/golden/hashes.json, a user technique's in its own.
+    std::map<std::string, nlohmann::json> goldens;
+    for (const Scene& scene : scenes) {
+        if (goldens.count(scene.golden_file)) continue;
+        nlohmann::json& golden = goldens[scene.golden_file] = nlohmann::json::object();
+        std::ifstream in(scene.golden_file);
         if (in) {
             golden = nlohmann::json::parse(in, nullptr, false);
             if (golden.is_discarded() || !golden.is_object())
-                throw std::runtime_error(golden_file() + ": malformed JSON");
+                throw std::runtime_error(scene.golden_file + ": malformed JSON");
         } else if (action == "check") {
-            throw std::runtime_error("no golden file at " + golden_file());
+            throw std::runtime_error("no golden file at " + scene.golden_file);
         }
     }
 
-    Backends backends(common.threads, glsl_dir());
+    Backends backends(common.threads, glsl_roots());
     std::vector<std::string> changed;
     for (const Scene& scene : scenes) {
+        nlohmann::json& golden = goldens[scene.golden_file];
         // The image under the scene's name, each named output under
         // "<scene>:<output>".
         const Rendered r = backends.render(Backend::Cpu, scene.frame);
@@ -61,7 +70,14 @@ int cmd_golden(const std::string& action, const std::vector<std::string>& names_
         }
     }
     if (action == "update") {
-        write_text_file(golden_file(), json_text(golden, 2) + "\n");
+        for (const auto& [file, golden] : goldens) {
+            // A user technique's first update makes its golden folder.
+            std::error_code ec;
+            const std::filesystem::path folder = std::filesystem::path(file).parent_path();
+            if (!folder.empty()) std::filesystem::create_directories(folder, ec);
+            if (ec) throw std::runtime_error("cannot create folder " + folder.string() + ": " + ec.message());
+            write_text_file(file, json_text(golden, 2) + "\n");
+        }
         std::cout << "updated " << changed.size() << " golden hashes (" << scenes.size() << " scenes)\n";
         return 0;
     }

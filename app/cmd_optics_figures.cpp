@@ -15,6 +15,7 @@
 #include "app/commands.h"
 #include "scene/layer_file.h"
 #include "app/svg_chart.h"
+#include "app/tool_data.h"
 #include "image/image_io.h"
 #include "optics/layered.h"
 #include "optics/microsurface_walk.h"
@@ -148,7 +149,7 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
     // against Monte Carlo (one channel: the materials are grey).
     for (const char* name : {"left", "middle", "right"}) {
         std::cerr << "optics-figures: Figure 3, " << name << "\n";
-        const auto layers = read_layer_file(std::string(SHADERTWIN_MATERIALS_DIR) + "/table2-" + name + ".json");
+        const auto layers = read_layer_file(materials_dir() + "/table2-" + name + ".json");
         LayeredOptions lo;
         lo.grid = 512;
         lo.extent = 64.0;

@@ -7,6 +7,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/tool_data.h"
 #include "app/memory_budget.h"
 #include "app/json_text.h"
 #include "app/backends.h"
@@ -138,7 +139,7 @@ int cmd_report(const std::string& out_dir, int frames, const CommonOptions& comm
     if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
 
     set_llvmpipe_threads(common.threads);
-    Backends backends(common.threads, glsl_dir());
+    Backends backends(common.threads, glsl_roots());
     std::vector<SceneComparison> results;
     std::vector<BenchResult> costs;
     for (const Scene& s : scenes) {

@@ -23,6 +23,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/tool_data.h"
 #include "app/memory_budget.h"
 #include "app/backends.h"
 #include "app/commands.h"
@@ -140,7 +141,7 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
     std::filesystem::create_directories(out_dir, ec);
     if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
 
-    Backends backends(common.threads, glsl_dir());
+    Backends backends(common.threads, glsl_roots());
     std::vector<Result> results(all.size());
     std::vector<Image> images(all.size());
     for (size_t i = 0; i < all.size(); ++i) {

@@ -18,6 +18,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "app/tool_data.h"
 #include "app/memory_budget.h"
 #include "app/backends.h"
 #include "app/commands.h"
@@ -180,7 +181,7 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
     // surface ends at a horizon (the clear pixels are not counted).
     const std::vector<double> angles = {30, 60, 75, 85};
     const std::vector<Setting> all = settings();
-    Backends backends(common.threads, glsl_dir());
+    Backends backends(common.threads, glsl_roots());
     const ReliefSweepTwins sweep_twins;
     CpuRenderer exact_renderer(common.threads, sweep_twins);
 

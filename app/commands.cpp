@@ -11,17 +11,11 @@
 #include "app/json_text.h"
 #include "app/memory_budget.h"
 #include "app/provenance.h"
+#include "app/tool_data.h"
 #include "image/image_io.h"
 #include "scene/scene.h"
 
-#ifndef SHADERTWIN_GLSL_DIR
-#error "SHADERTWIN_GLSL_DIR must point at glsl/"
-#endif
-
 namespace st {
-
-std::string glsl_dir() { return SHADERTWIN_GLSL_DIR; }
-std::string golden_file() { return SHADERTWIN_GOLDEN_FILE; }
 
 namespace {
 
@@ -68,7 +62,7 @@ void print_human(const SceneComparison& c) {
 }  // namespace
 
 int cmd_version() {
-    Backends backends(1, glsl_dir());
+    Backends backends(1, glsl_roots());
     const std::string renderer = backends.gl_renderer(), version = backends.gl_version();
     std::cout << "shadertwin " << shadertwin_version() << "\n"
               << "mesa " << mesa_version(version) << "\n"
@@ -91,7 +85,7 @@ int cmd_render(const std::vector<std::string>& names, const std::string& backend
     std::vector<uint64_t> estimates;
     const auto scenes = load_all(names, common, use, estimates);
     make_dir(out_dir);
-    Backends backends(common.threads, glsl_dir());
+    Backends backends(common.threads, glsl_roots());
     for (size_t i = 0; i < scenes.size(); ++i) {
         const Scene& scene = scenes[i];
         reset_peak_resident();
@@ -121,7 +115,7 @@ int cmd_compare(const std::vector<std::string>& names, const std::string& out_di
     std::vector<uint64_t> estimates;
     const auto scenes = load_all(names, common, MemoryUse::Compare, estimates);
     make_dir(out_dir);
-    Backends backends(common.threads, glsl_dir());
+    Backends backends(common.threads, glsl_roots());
     bool all_pass = true;
     for (size_t i = 0; i < scenes.size(); ++i) {
         const Scene& scene = scenes[i];

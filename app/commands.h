@@ -62,8 +62,4 @@ int cmd_slab(const SlabOptions& options);
 std::vector<std::string> take_slab_notes();
 int cmd_profile(const SlabOptions& options, const std::string& out, double r_max, int samples);
 
-// Where the GLSL sources and golden hashes live (set at build time).
-std::string glsl_dir();
-std::string golden_file();
-
 }  // namespace st

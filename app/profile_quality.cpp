@@ -7,6 +7,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "app/tool_data.h"
 #include "app/backends.h"
 #include "app/commands.h"
 #include "image/unorm8.h"
@@ -222,7 +223,7 @@ void install_quality_resolver(int threads) {
         static std::mutex mutex;
         static std::unique_ptr<Backends> backends;
         std::lock_guard<std::mutex> lock(mutex);
-        if (!backends) backends = std::make_unique<Backends>(threads, glsl_dir());
+        if (!backends) backends = std::make_unique<Backends>(threads, glsl_roots());
         const QualityChoice choice = measure_quality(*backends, name, document, 3);
         remember_quality_choice(document, choice);
         document = with_choice(document, choice.model(), choice.samples());

@@ -45,19 +45,19 @@ private:
 }  // namespace
 
 std::unique_ptr<VertexTwin> ReliefSweepTwins::make_vertex(const std::string& name) const {
-    return builtin_twins().make_vertex(name);
+    return twins().make_vertex(name);
 }
 
 std::unique_ptr<FragmentTwin> ReliefSweepTwins::make_fragment(const std::string& name) const {
     if (name == kExactReliefMapping)
         return std::make_unique<ReliefMappingFragment>(std::make_shared<ExactReliefIntersector>());
-    return builtin_twins().make_fragment(name);
+    return twins().make_fragment(name);
 }
 
-std::vector<std::string> ReliefSweepTwins::vertex_names() const { return builtin_twins().vertex_names(); }
+std::vector<std::string> ReliefSweepTwins::vertex_names() const { return twins().vertex_names(); }
 
 std::vector<std::string> ReliefSweepTwins::fragment_names() const {
-    std::vector<std::string> names = builtin_twins().fragment_names();
+    std::vector<std::string> names = twins().fragment_names();
     names.push_back(kExactReliefMapping);
     return names;
 }

@@ -101,7 +101,7 @@ void BM_FragmentTwin(benchmark::State& state, std::string name) {
 
 void BM_CpuFrame(benchmark::State& state, std::string scene_name, int threads) {
     const Scene scene = load_scene(scene_name, {});
-    CpuRenderer cpu(threads, builtin_twins());
+    CpuRenderer cpu(threads, twins());
     cpu.prepare(scene.frame);
     for (auto _ : state) cpu.execute();
     const auto& pass = scene.frame.passes.back();

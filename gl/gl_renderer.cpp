@@ -265,8 +265,8 @@ struct GlRenderer::State {
     }
 };
 
-GlRenderer::GlRenderer(std::string glsl_dir)
-    : shaders_(std::make_unique<ShaderFiles>(glsl_dir)), context_(make_osmesa_context()), state_(new State) {}
+GlRenderer::GlRenderer(const std::vector<std::string>& glsl_roots)
+    : shaders_(std::make_unique<ShaderFiles>(glsl_roots)), context_(make_osmesa_context()), state_(new State) {}
 
 GlRenderer::~GlRenderer() {
     context_->make_current();

@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "frame/frame.h"
 #include "gl/gl_context.h"
@@ -15,8 +16,9 @@ class ShaderFiles;
 
 class GlRenderer {
 public:
-    // `glsl_dir` holds <technique>/<name>.vert|.frag. Creates the context.
-    explicit GlRenderer(std::string glsl_dir);
+    // `glsl_roots` hold <technique>/<name>.vert|.frag (gl/shader_files.h).
+    // Creates the context.
+    explicit GlRenderer(const std::vector<std::string>& glsl_roots);
     ~GlRenderer();
 
     // Compiles programs, uploads geometry and textures, creates targets.

@@ -108,7 +108,7 @@ TEST(GlReference, CompileErrorNamesTheFileAndCarriesTheLog) {
     fs::create_directories(dir);
     std::ofstream(dir / "broken.vert") << "#version 450 core\nvoid main() { gl_Position = vec4(0.0); }\n";
     std::ofstream(dir / "broken.frag") << "#version 450 core\nout vec4 c;\nvoid main() { c = undefined_thing; }\n";
-    GlRenderer gl(dir.string());
+    GlRenderer gl({dir.string()});
     Frame frame;
     Pass pass;
     pass.width = pass.height = 4;

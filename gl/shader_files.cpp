@@ -8,24 +8,42 @@ namespace st {
 
 namespace fs = std::filesystem;
 
-ShaderFiles::ShaderFiles(const std::string& glsl_dir) : dir_(glsl_dir) {
-    std::error_code ec;
-    for (auto it = fs::recursive_directory_iterator(glsl_dir, ec); !ec && it != fs::recursive_directory_iterator();
-         it.increment(ec)) {
-        const fs::path& p = it->path();
-        const std::string ext = p.extension().string();
-        if (!it->is_regular_file() || (ext != ".vert" && ext != ".frag" && ext != ".glsl")) continue;
-        const auto [entry, added] = paths_.emplace(p.filename().string(), p.string());
-        if (!added)
-            throw std::runtime_error("shader " + p.filename().string() + " is in two folders: " + entry->second +
-                                     " and " + p.string());
+namespace {
+
+bool is_shader(const fs::path& p) {
+    const std::string ext = p.extension().string();
+    return ext == ".vert" || ext == ".frag" || ext == ".glsl";
+}
+
+}  // namespace
+
+ShaderFiles::ShaderFiles(const std::vector<std::string>& roots) {
+    for (const std::string& root : roots) {
+        where_ += (where_.empty() ? "" : ", ") + root;
+        std::error_code ec;
+        if (fs::is_regular_file(root, ec)) {
+            if (!is_shader(root)) throw std::runtime_error("shader " + root + " is not a .vert, .frag or .glsl file");
+            add(root);
+            continue;
+        }
+        if (!fs::is_directory(root, ec)) throw std::runtime_error("no shader file or folder " + root);
+        for (auto it = fs::recursive_directory_iterator(root, ec); !ec && it != fs::recursive_directory_iterator();
+             it.increment(ec))
+            if (it->is_regular_file() && is_shader(it->path())) add(it->path().string());
+        if (ec) throw std::runtime_error("cannot read shader folder " + root + ": " + ec.message());
     }
-    if (ec) throw std::runtime_error("cannot read shader folder " + glsl_dir + ": " + ec.message());
+}
+
+void ShaderFiles::add(const std::string& path) {
+    const std::string name = fs::path(path).filename().string();
+    const auto [entry, added] = paths_.emplace(name, path);
+    if (!added && fs::weakly_canonical(entry->second) != fs::weakly_canonical(path))
+        throw std::runtime_error("shader " + name + " is in two places: " + entry->second + " and " + path);
 }
 
 const std::string& ShaderFiles::path(const std::string& name, const std::string& extension) const {
     const auto it = paths_.find(name + extension);
-    if (it == paths_.end()) throw std::runtime_error("no shader " + name + extension + " under " + dir_);
+    if (it == paths_.end()) throw std::runtime_error("no shader " + name + extension + " under " + where_);
     return it->second;
 }
 

@@ -8,10 +8,7 @@
 #include "scene/input_error.h"
 #include "scene/json_reader.h"
 #include "scene/scene_kinds.h"
-
-#ifndef SHADERTWIN_SCENE_DIR
-#error "SHADERTWIN_SCENE_DIR must point at scenes/"
-#endif
+#include "scene/scene_sources.h"
 
 namespace st {
 
@@ -21,8 +18,8 @@ namespace fs = std::filesystem;
 // single RGBA32F target alone passes half a gigabyte.
 constexpr int kMaxResolution = 8192;
 
-const std::map<std::string, SceneBuilder>& scene_builders() {
-    static const std::map<std::string, SceneBuilder> builders = {
+static std::map<std::string, SceneBuilder>& builders() {
+    static std::map<std::string, SceneBuilder> builders = {
         {"triangles", build_triangles_scene},
         {"conformance", build_conformance_scene},
         {"thin-slab", build_thin_slab_scene},
@@ -33,7 +30,14 @@ const std::map<std::string, SceneBuilder>& scene_builders() {
     return builders;
 }
 
-std::string builtin_scene_dir() { return SHADERTWIN_SCENE_DIR; }
+const std::map<std::string, SceneBuilder>& scene_builders() { return builders(); }
+
+void register_scene_kind(const std::string& kind, SceneBuilder builder) {
+    if (kind.empty()) throw InputError("a scene kind with an empty name");
+    if (!builder) throw InputError("scene kind '" + kind + "' has no builder");
+    if (!builders().emplace(kind, std::move(builder)).second)
+        throw InputError("scene kind '" + kind + "' registered twice");
+}
 
 static QualityResolver& quality_resolver() {
     static QualityResolver resolver;
@@ -42,9 +46,7 @@ static QualityResolver& quality_resolver() {
 
 std::vector<std::string> builtin_scene_names() {
     std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(builtin_scene_dir()))
-        if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
-    std::sort(names.begin(), names.end());
+    for (const SceneEntry& e : scene_sources().entries()) names.push_back(e.name);
     return names;
 }
 
@@ -89,7 +91,20 @@ Scene load_scene(const std::string& name_or_path, const std::vector<std::string>
     fs::path path = name_or_path;
     const bool is_path = name_or_path.find('/') != std::string::npos ||
                          path.extension() == ".json";
-    if (!is_path) path = fs::path(builtin_scene_dir()) / (name_or_path + ".json");
+    std::string golden = scene_sources().default_golden_file();
+    if (!is_path) {
+        const std::optional<SceneEntry> entry = scene_sources().find(name_or_path);
+        if (!entry) throw InputError("unknown scene '" + name_or_path + "' (shadertwin list shows the built-in ones)");
+        path = entry->path;
+        golden = entry->golden_file;
+    } else {
+        // A file of a source keeps that source's golden file.
+        std::error_code ec;
+        const fs::path canonical = fs::weakly_canonical(path, ec);
+        if (!ec)
+            for (const SceneEntry& e : scene_sources().entries())
+                if (fs::weakly_canonical(e.path, ec) == canonical && !ec) golden = e.golden_file;
+    }
     std::ifstream in(path);
     if (!in) {
         if (is_path) throw InputError("cannot read scene file " + path.string());
@@ -99,7 +114,9 @@ Scene load_scene(const std::string& name_or_path, const std::vector<std::string>
     if (document.is_discarded()) throw InputError(path.string() + ": malformed JSON");
     if (!document.is_object()) throw InputError(path.string() + ": a scene must be a JSON object");
     for (const std::string& o : overrides) apply_override(document, o);
-    return load_scene_document(path.stem().string(), std::move(document), path.string());
+    Scene scene = load_scene_document(path.stem().string(), std::move(document), path.string());
+    scene.golden_file = golden;
+    return scene;
 }
 
 void set_quality_resolver(QualityResolver resolver) { quality_resolver() = std::move(resolver); }

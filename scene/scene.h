@@ -21,6 +21,7 @@ struct Scene {
     nlohmann::json document;  // after overrides
     Criteria criteria;
     Frame frame;
+    std::string golden_file;  // where `golden` keeps its hashes (scene_sources.h)
 };
 
 // Throws InputError with one line on any problem: unknown scene, malformed
@@ -38,8 +39,9 @@ Scene load_scene_document(const std::string& name, nlohmann::json document, cons
 using QualityResolver = std::function<void(const std::string& name, nlohmann::json& document)>;
 void set_quality_resolver(QualityResolver resolver);
 
+// Every named scene of the tool (scene_sources.h), sorted: the built-in
+// ones and a user tool's own.
 std::vector<std::string> builtin_scene_names();
-std::string builtin_scene_dir();
 
 // Applies "dotted.path=value" to a document: the value is parsed as JSON when
 // it parses (numbers, booleans, arrays), else taken as a string. The parent

@@ -20,6 +20,9 @@ using SceneBuilder = std::function<Frame(JsonReader& scene, SceneSize size)>;
 
 // kind name -> builder
 const std::map<std::string, SceneBuilder>& scene_builders();
+// Adds a user technique's kind (sdk/technique.h); throws InputError when
+// the kind exists.
+void register_scene_kind(const std::string& kind, SceneBuilder builder);
 
 Frame build_triangles_scene(JsonReader& scene, SceneSize size);
 Frame build_conformance_scene(JsonReader& scene, SceneSize size);

@@ -10,25 +10,13 @@ trap 'rm -rf "$work"' EXIT
 # times slower and scales them (scripts/sanitizer-env.sh).
 time_scale="${SHADERTWIN_TIME_SCALE:-1}"
 
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "$0")/lib.sh"
 
 all_scenes() { "$bin" list; }
 
-# Runs a command that must fail with exit 2, one line on stderr, and no file
-# left in its output folder.
-expect_bad_input() {
-  local what="$1"; shift
-  local out="$work/bad-out"
-  rm -rf "$out"; mkdir -p "$out"
-  set +e
-  "$@" --out "$out" >"$work/stdout" 2>"$work/stderr"
-  local rc=$?
-  set -e
-  [ "$rc" -eq 2 ] || fail "$what: exit $rc, expected 2"
-  [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "$what: stderr is not one line: $(cat "$work/stderr")"
-  [ -z "$(ls -A "$out")" ] || fail "$what: left files behind: $(ls -A "$out")"
-  echo "ok   $what: $(cat "$work/stderr")"
-}
+# A command that must fail with exit 2, one line on stderr, and no file left
+# in its output folder.
+expect_bad_input() { local what="$1"; shift; expect_refused "$what" "" "$@"; }
 
 case "$case_name" in
   compare_builtin)

@@ -16,7 +16,7 @@
 int main(int argc, char** argv) {
     const int threads = argc > 1 ? std::stoi(argv[1]) : 2;
     std::cout << "lanes " << st::simd::kLanes << "\n";
-    st::CpuRenderer cpu(threads, st::builtin_twins());
+    st::CpuRenderer cpu(threads, st::twins());
     for (const std::string& name : st::builtin_scene_names()) {
         const st::Scene scene = st::load_scene(name, {});
         std::cout << name << " " << st::pixel_hash(cpu.render(scene.frame)) << "\n";

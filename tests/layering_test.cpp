@@ -36,8 +36,13 @@ const std::map<std::string, std::set<std::string>>& allowed() {
         {"scene", {"frame", "image", "simd", "texture", "shading", "kernels", "optics"}},
         {"app", {"frame", "image", "simd", "texture", "shading", "raster", "kernels", "gl", "scene", "reference",
                  "optics"}},
+        // The SDK a user's tool builds against: the runtime twins are written
+        // in, the scene kinds' reader, and the tool's command line.
+        {"sdk", {"frame", "simd", "texture", "shading", "kernels", "scene", "app"}},
+        // An out-of-tree technique sees what the installed package offers.
+        {"examples", {"frame", "simd", "texture", "shading", "scene", "sdk"}},
         {"bench", {"frame", "image", "simd", "texture", "shading", "raster", "kernels", "gl", "scene", "app"}},
-        {"tests", {"frame", "image", "simd", "texture", "shading", "raster", "kernels", "gl", "scene", "app"}},
+        {"tests", {"frame", "image", "simd", "texture", "shading", "raster", "kernels", "gl", "scene", "app", "sdk"}},
     };
     return table;
 }

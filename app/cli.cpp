@@ -1,6 +1,8 @@
-// main.cpp: the command line (see README.md and docs/ for each command).
+// cli.cpp: the command line (see README.md and docs/ for each command).
 // Errors of any kind print one line on stderr (plus the GL log after a
 // shader compile error) and exit 2.
+#include "app/cli.h"
+
 #include <algorithm>
 #include <CLI/CLI.hpp>
 
@@ -34,7 +36,9 @@ void add_common(CLI::App* cmd, st::CommonOptions& common) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace st {
+
+int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     CLI::App app{"shadertwin: GLSL translucency shaders and their C++ twins, compared on the CPU"};
     app.require_subcommand(0, 1);
     bool version = false;
@@ -179,6 +183,7 @@ int main(int argc, char** argv) {
     }
 
     try {
+        if (setup) setup();
         // A scene's `quality: auto` is resolved by rendering candidates (app/profile_quality.h).
         st::install_quality_resolver(common.threads);
         if (version) return st::cmd_version();
@@ -217,3 +222,5 @@ int main(int argc, char** argv) {
         return 2;
     }
 }
+
+}  // namespace st

@@ -1,0 +1,57 @@
+// tool_data.cpp: see tool_data.h.
+#include "app/tool_data.h"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "scene/scene_sources.h"
+
+#if !defined(SHADERTWIN_GLSL_DIR) || !defined(SHADERTWIN_MATERIALS_DIR)
+#error "SHADERTWIN_GLSL_DIR and SHADERTWIN_MATERIALS_DIR must name the source tree's glsl/ and materials/"
+#endif
+
+namespace st {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct ToolData {
+    std::vector<std::string> glsl_roots = {SHADERTWIN_GLSL_DIR};
+    std::string materials = SHADERTWIN_MATERIALS_DIR;
+};
+
+ToolData& data() {
+    static ToolData d;
+    return d;
+}
+
+}  // namespace
+
+void set_builtin_data_dir(const std::string& share_dir) {
+    const fs::path share = share_dir;
+    for (const char* needed : {"glsl", "scenes", "golden/hashes.json", "materials"}) {
+        std::error_code ec;
+        if (!fs::exists(share / needed, ec))
+            throw std::runtime_error("shadertwin's data folder " + share_dir + " has no " + needed +
+                                     " (is the install complete?)");
+    }
+    data().glsl_roots.front() = (share / "glsl").string();
+    data().materials = (share / "materials").string();
+    scene_sources().set_builtin((share / "scenes").string(), (share / "golden" / "hashes.json").string());
+}
+
+std::string installed_data_dir_beside(const std::string& executable) {
+    std::error_code ec;
+    const fs::path share = fs::weakly_canonical(executable, ec).parent_path().parent_path() / "share" / "shadertwin";
+    return !ec && fs::is_directory(share / "glsl", ec) ? share.string() : std::string();
+}
+
+void add_glsl_roots(const std::vector<std::string>& roots) {
+    for (const std::string& r : roots) data().glsl_roots.push_back(r);
+}
+
+std::vector<std::string> glsl_roots() { return data().glsl_roots; }
+std::string materials_dir() { return data().materials; }
+
+}  // namespace st
