@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
 
 #include "app/commands.h"
@@ -62,6 +64,8 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     compare->add_option("scenes", scenes, "built-in scene names or .json paths")->required();
     compare->add_option("--out", out_dir, "output folder");
     compare->add_flag("--json", json, "one JSON object per scene");
+    std::string junit;
+    compare->add_option("--junit", junit, "also write JUnit XML: a test case per scene and output")->type_name("FILE");
     add_common(compare, common);
 
     auto* diff = app.add_subcommand("diff", "compare two image files");
@@ -69,10 +73,36 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     diff->add_option("b", diff_b, "second image (the reference)")->required();
     diff->add_option("--out", out_png, "heat map PNG");
     diff->add_flag("--json", json, "JSON output");
+    // idiff's thresholds; any of them switches from the strict default
+    // criteria to idiff's rule (image/thresholds.h).
+    st::Thresholds thresholds;
+    std::vector<CLI::Option*> threshold_options = {
+        diff->add_option("--fail", thresholds.fail, "a pixel fails when a channel differs by more (default 1e-6)"),
+        diff->add_option("--failpercent", thresholds.fail_percent, "percent of pixels that may fail (default 0)"),
+        diff->add_option("--hardfail", thresholds.hard_fail, "fail when any channel differs by more (default: none)"),
+        diff->add_option("--warn", thresholds.warn, "a pixel warns when a channel differs by more (default 1e-6)"),
+        diff->add_option("--warnpercent", thresholds.warn_percent, "percent of pixels that may warn (default 0)"),
+        diff->add_option("--hardwarn", thresholds.hard_warn, "warn when any channel differs by more (default: none)")};
+    const CLI::Validator non_negative(
+        [](std::string& value) {
+            char* end = nullptr;
+            const double v = std::strtod(value.c_str(), &end);
+            const bool number = !value.empty() && end == value.c_str() + value.size();
+            return number && std::isfinite(v) && v >= 0 ? std::string() : "'" + value + "' is not a finite number >= 0";
+        },
+        "", "NON_NEGATIVE");
+    for (CLI::Option* o : threshold_options) o->check(non_negative);
+    diff->footer(
+        "Without threshold options, the images must meet the strict default criteria (every 8-bit pixel equal). With "
+        "any of them, idiff's rule: the comparison fails when more than --failpercent of the pixels fail or any "
+        "difference exceeds --hardfail, and warns likewise. NaN and infinity differ from everything but "
+        "themselves.\nExit codes: 0 the same within bounds (a warning included), 1 the images differ, 2 an error "
+        "(an unreadable image, sizes that differ, a bad option).");
 
     auto* golden = app.add_subcommand("golden", "check or update the committed CPU hashes");
     golden->add_option("action", action, "check or update")->required()->check(CLI::IsMember({"check", "update"}));
     golden->add_option("scenes", scenes, "scenes (default: every built-in scene)");
+    golden->add_option("--junit", junit, "also write JUnit XML: a test case per scene and output")->type_name("FILE");
     add_common(golden, common);
 
     int frames = 100;
@@ -155,8 +185,10 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     add_common(sweep, common);
 
     int report_frames = 10;
-    auto* report = app.add_subcommand("report", "every built-in scene on both backends, compared and timed");
+    auto* report = app.add_subcommand("report", "scenes on both backends, compared and timed, as an HTML page");
+    report->add_option("scenes", scenes, "scene names, paths or shell patterns ('relief-*'); default: every scene");
     report->add_option("--out", out_dir, "output folder");
+    report->add_option("--junit", junit, "also write JUnit XML: a test case per scene and output")->type_name("FILE");
     report->add_option("--frames", report_frames, "frames per backend for the cost table (0: none)")
         ->check(CLI::Range(0, 100000));
     add_common(report, common);
@@ -189,10 +221,15 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
         if (version) return st::cmd_version();
         if (app.got_subcommand("list")) return st::cmd_list();
         if (*render) return st::cmd_render(scenes, backend, out_dir, common);
-        if (*compare) return st::cmd_compare(scenes, out_dir, json, common);
-        if (*diff) return st::cmd_diff(diff_a, diff_b, out_png, json);
-        if (*golden) return st::cmd_golden(action, scenes, common);
-        if (*report) return st::cmd_report(out_dir, report_frames, common);
+        if (*compare) return st::cmd_compare(scenes, out_dir, json, junit, common);
+        if (*diff) {
+            const bool any = std::any_of(threshold_options.begin(), threshold_options.end(),
+                                         [](CLI::Option* o) { return o->count() > 0; });
+            return st::cmd_diff(diff_a, diff_b, out_png, json,
+                                any ? std::optional<st::Thresholds>(thresholds) : std::nullopt);
+        }
+        if (*golden) return st::cmd_golden(action, scenes, junit, common);
+        if (*report) return st::cmd_report(scenes, out_dir, report_frames, junit, common);
         if (*slab || *profile) {
             for (const CLI::Option* option : (*slab ? slab : profile)->get_options())
                 if (option->count() > 0)

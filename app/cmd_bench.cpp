@@ -1,6 +1,7 @@
 // cmd_bench.cpp: `bench`, frames per second on both backends (app/bench.h
 // says how a frame is measured).
 #include "app/tool_data.h"
+#include "app/progress.h"
 #include "app/memory_budget.h"
 #include "app/pass_times.h"
 #include "scene/profile_material.h"
@@ -25,14 +26,13 @@ int cmd_bench(const std::vector<std::string>& names, int frames, bool json, bool
     Backends backends(common.threads, glsl_roots());
     std::unique_ptr<CpuRenderer> one_thread;
     if (scaling) one_thread = std::make_unique<CpuRenderer>(1, twins());
-    const auto start = Clock::now();
     if (!json)
         std::printf("%-30s %9s %9s %9s %7s %24s %24s | %7s %7s %7s %8s %7s%s\n", "scene", "size", "cpu fps", "gl fps",
                     "cpu/gl", "cpu ms med/min/max", "gl ms med/min/max", "vertex", "setup", "raster", "fragment",
                     "output", scaling ? " | 1-thread ms  scaling" : "");
+    Progress progress("bench", scenes.size());
     for (size_t i = 0; i < scenes.size(); ++i) {
-        if (ms_between(start, Clock::now()) > 2000.0)
-            std::fprintf(stderr, "bench: %zu/%zu %s\n", i + 1, scenes.size(), scenes[i].name.c_str());
+        progress.step(scenes[i].name);
         const BenchResult r = bench_scene(scenes[i], backends, frames, std::max(2, frames / 10), one_thread.get());
         if (json) {
             std::cout << json_text(bench_json(r, Backend::Cpu)) << "\n" << json_text(bench_json(r, Backend::Gl)) << std::endl;

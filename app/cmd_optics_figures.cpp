@@ -14,6 +14,8 @@
 
 #include "app/commands.h"
 #include "scene/layer_file.h"
+#include "app/progress.h"
+#include "app/short_number.h"
 #include "app/svg_chart.h"
 #include "app/tool_data.h"
 #include "image/image_io.h"
@@ -105,10 +107,11 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
     if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
     std::ostringstream md;
     md << "# Optics figures\n\n`shadertwin optics-figures --photons " << photons << "`\n\n";
+    Progress progress("optics-figures", 0);
 
     // Figure 2: radial profiles at 2, 10, 20 mean free paths.
     for (double d : {2.0, 10.0, 20.0}) {
-        std::cerr << "optics-figures: Figure 2, " << d << " mfp\n";
+        progress.step("Figure 2, " + short_number(d) + " mfp");
         McSetup setup;
         McLayer l;
         l.sigma_a = 0.00127;
@@ -148,7 +151,7 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
     // Figure 3: the inferred two-layer materials of Table 2, KM and no-KM
     // against Monte Carlo (one channel: the materials are grey).
     for (const char* name : {"left", "middle", "right"}) {
-        std::cerr << "optics-figures: Figure 3, " << name << "\n";
+        progress.step(std::string("Figure 3, ") + name);
         const auto layers = read_layer_file(materials_dir() + "/table2-" + name + ".json");
         LayeredOptions lo;
         lo.grid = 512;
@@ -187,7 +190,7 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
 
     // Table 3's skin: layered multipole against Monte Carlo, per channel.
     {
-        std::cerr << "optics-figures: skin\n";
+        progress.step("skin");
         const std::vector<LayerSpec> skin = {
             {{2.1, 2.1, 5.0}, {48.0, 60.0, 65.0}, 0.0, 1.4, 0.03, 0.0},
             {{0.16, 0.19, 0.30}, {32.0, 40.0, 46.0}, 0.25, 1.34 / 1.4, 0.05, 0.0},
@@ -231,7 +234,7 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
     // from inside and by reciprocity, against the tracer's facet-sampled
     // surface, on a semi-infinite medium whose diffusion error is moderate.
     {
-        std::cerr << "optics-figures: rough surfaces\n";
+        progress.step("rough surfaces");
         Slab s;
         s.sigma_a = 1.0;
         s.sigma_s = 9.0;
@@ -274,7 +277,7 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
     // convergence); error against 2000 pairs per side, over totals and the
     // profile at 64 radii to 8 mm; time to build and tabulate.
     {
-        std::cerr << "optics-figures: pairs\n";
+        progress.step("pairs");
         const Slab s = notes_slab(2.0);
         const Multipole ref(s, 2000);
         std::vector<double> radii;
@@ -338,7 +341,7 @@ int cmd_optics_figures(const std::string& out_dir, long long photons, int thread
     // slab (the Monte Carlo of the whole is the truth for the totals), and
     // the finest setting for the profile.
     {
-        std::cerr << "optics-figures: grid\n";
+        progress.step("grid");
         LayerSpec half;
         half.sigma_a = {0.01, 0.01, 0.01};
         half.sigma_s = {1.0, 1.0, 1.0};

@@ -2,14 +2,17 @@
 // backends, compared; a Markdown summary on stdout and an HTML page with the
 // images, heat maps and metrics, failing scenes first.
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
 
 #include "app/tool_data.h"
+#include "app/progress.h"
 #include "app/memory_budget.h"
 #include "app/json_text.h"
+#include "app/junit.h"
 #include "app/backends.h"
 #include "app/bench.h"
 #include "app/commands.h"
@@ -130,9 +133,12 @@ std::string html(const std::vector<SceneComparison>& results, const std::string&
 
 }  // namespace
 
-int cmd_report(const std::string& out_dir, int frames, const CommonOptions& common) {
+int cmd_report(const std::vector<std::string>& patterns, const std::string& out_dir, int frames,
+               const std::string& junit_path, const CommonOptions& common) {
+    if (!junit_path.empty()) check_junit_path(junit_path);
     std::vector<Scene> scenes;
-    for (const auto& n : builtin_scene_names()) scenes.push_back(load_scene(n, common.overrides));
+    for (const auto& n : patterns.empty() ? builtin_scene_names() : expand_scene_patterns(patterns))
+        scenes.push_back(load_scene(n, common.overrides));
     check_memory(scenes, MemoryUse::Compare, common.max_memory);
     std::error_code ec;
     std::filesystem::create_directories(out_dir, ec);
@@ -142,9 +148,14 @@ int cmd_report(const std::string& out_dir, int frames, const CommonOptions& comm
     Backends backends(common.threads, glsl_roots());
     std::vector<SceneComparison> results;
     std::vector<BenchResult> costs;
+    JunitReport junit("shadertwin report");
+    Progress progress("report", scenes.size());
     for (const Scene& s : scenes) {
-        std::cerr << "report: " << s.name << "\n";
+        progress.step(s.name);
+        const auto start = std::chrono::steady_clock::now();
         results.push_back(compare_scene(s, backends, out_dir));
+        add_junit_cases(junit, s, results.back(), out_dir,
+                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         if (frames > 0) costs.push_back(bench_scene(s, backends, frames, 2));
     }
     // Failures first, then by name.
@@ -154,6 +165,7 @@ int cmd_report(const std::string& out_dir, int frames, const CommonOptions& comm
     const std::string cost = cost_markdown(costs, frames);
     write_text_file(out_dir + "/index.html", html(results, renderer, cost));
     std::cout << markdown(results, renderer) << cost;
+    if (!junit_path.empty()) write_junit(junit_path, junit);
     const bool all_pass = std::all_of(results.begin(), results.end(), [](auto& c) { return c.pass(); });
     return all_pass ? 0 : 1;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -11,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "app/progress.h"
 #include "app/json_text.h"
 #include "app/profile_table.h"
 #include "optics/diffuse_fresnel.h"
@@ -160,13 +162,10 @@ optics::McSetup mc_setup(const std::vector<optics::LayerSpec>& layers, int chann
     setup.photons = uint64_t(o.photons);
     setup.seed = uint64_t(o.seed);
     setup.threads = o.threads;
-    // Progress once the whole command (all channels; one command per
-    // process) has run 2 s.
-    static const auto start = Clock::now();
-    const std::string what = !o.layers_file.empty() ? "mc, channel " + std::to_string(channel) + ": " : "mc: ";
-    setup.progress = [what](double done) {
-        if (ms_between(start, Clock::now()) > 2000.0) std::cerr << what << int(done * 100.0) << " %\n";
-    };
+    // Progress on a terminal (app/progress.h), per channel of a stack.
+    const auto progress = std::make_shared<Progress>(
+        !o.layers_file.empty() ? "Monte Carlo, channel " + std::to_string(channel) : "Monte Carlo", 0);
+    setup.progress = [progress](double done) { progress->note(std::to_string(int(done * 100.0)) + " %"); };
     return setup;
 }
 

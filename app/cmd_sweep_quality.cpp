@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "app/tool_data.h"
+#include "app/progress.h"
 #include "app/memory_budget.h"
 #include "app/backends.h"
 #include "app/commands.h"
@@ -56,6 +57,7 @@ int cmd_sweep_quality(const std::vector<std::string>& scene_names, const std::st
           "pixels over budget, p99 / max steps) |\n| --- | --- | --- | --- | --- |\n";
     csv << "scene,model,samples,frame_ms,over_budget,p99_8bit,max_8bit,within,chosen,build\n";
     bool failures = false;
+    Progress progress("sweep profile-quality", scenes.size());
     for (const Scene& s : scenes) {
         nlohmann::json document = s.document;
         document["quality"] = "auto";
@@ -90,7 +92,7 @@ int cmd_sweep_quality(const std::vector<std::string>& scene_names, const std::st
         md << "| " << s.name << " | " << choice << " | "
            << (c.chosen < 0 ? short_number(c.reference_ms) : short_number(c.tried[size_t(c.chosen)].frame_ms)) << " | "
            << short_number(c.reference_ms) << " (" << short_number(c.reference_reach_mm) << ") | " << tried.str() << " |\n";
-        std::cerr << "sweep profile-quality: " << s.name << ": " << choice << "\n";
+        progress.step(s.name + ": " + choice);
     }
     md << "\nEach candidate's profile build (model, source, time; not in any frame) is in the CSV's last column.\n";
     if (!out_dir.empty()) {

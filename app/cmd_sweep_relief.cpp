@@ -19,6 +19,7 @@
 #include <sstream>
 
 #include "app/tool_data.h"
+#include "app/progress.h"
 #include "app/memory_budget.h"
 #include "app/backends.h"
 #include "app/commands.h"
@@ -214,6 +215,7 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
     std::error_code ec;
     std::filesystem::create_directories(out_dir, ec);
     if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
+    Progress progress("sweep relief", angles.size());
     for (size_t a = 0; a < angles.size(); ++a) {
         const double angle = angles[a];
         const Scene& scene = scenes[a];
@@ -317,7 +319,7 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
         const std::string svg = "relief-sweep-" + short_number(angle) + "deg.svg";
         write_text_file(out_dir + "/" + svg, chart.svg());
         md << "\n![" << short_number(angle) << " degrees](" << svg << ")\n";
-        std::cerr << "sweep relief: " << short_number(angle) << " degrees done\n";
+        progress.step(short_number(angle) + " degrees done");
     }
     write_text_file(out_dir + "/relief-sweep.csv", csv.str());
     write_text_file(out_dir + "/relief-sweep.md", md.str());

@@ -1,6 +1,7 @@
 // commands.cpp: version, list, render, compare and diff.
 #include "app/commands.h"
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -9,10 +10,13 @@
 #include "app/backends.h"
 #include "app/comparison.h"
 #include "app/json_text.h"
+#include "app/junit.h"
 #include "app/memory_budget.h"
 #include "app/provenance.h"
+#include "app/short_number.h"
 #include "app/tool_data.h"
 #include "image/image_io.h"
+#include "image/thresholds.h"
 #include "scene/scene.h"
 
 namespace st {
@@ -111,26 +115,33 @@ int cmd_render(const std::vector<std::string>& names, const std::string& backend
 }
 
 int cmd_compare(const std::vector<std::string>& names, const std::string& out_dir, bool json,
-                const CommonOptions& common) {
+                const std::string& junit_path, const CommonOptions& common) {
+    if (!junit_path.empty()) check_junit_path(junit_path);
     std::vector<uint64_t> estimates;
     const auto scenes = load_all(names, common, MemoryUse::Compare, estimates);
     make_dir(out_dir);
     Backends backends(common.threads, glsl_roots());
+    JunitReport junit("shadertwin compare");
     bool all_pass = true;
     for (size_t i = 0; i < scenes.size(); ++i) {
         const Scene& scene = scenes[i];
         reset_peak_resident();
+        const auto start = std::chrono::steady_clock::now();
         const SceneComparison c = compare_scene(scene, backends, out_dir);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        add_junit_cases(junit, scene, c, out_dir, seconds);
         all_pass &= c.pass();
         nlohmann::json j = to_json(c);
         j["memory"] = memory_json(estimates[i]);
         if (json) std::cout << json_text(j) << std::endl;
         else print_human(c);
     }
+    if (!junit_path.empty()) write_junit(junit_path, junit);
     return all_pass ? 0 : 1;
 }
 
-int cmd_diff(const std::string& a_path, const std::string& b_path, const std::string& out_png, bool json) {
+int cmd_diff(const std::string& a_path, const std::string& b_path, const std::string& out_png, bool json,
+             const std::optional<Thresholds>& thresholds) {
     const Image a = read_image(a_path), b = read_image(b_path);
     if (a.width != b.width || a.height != b.height)
         throw std::runtime_error("images differ in size: " + a_path + " and " + b_path);
@@ -139,19 +150,40 @@ int cmd_diff(const std::string& a_path, const std::string& b_path, const std::st
         const auto heat = heat_map(a, b);
         write_png_bytes(out_png, a.width, a.height, 3, heat.data());
     }
-    // Without a scene there are only the strict default criteria to check.
-    const auto failures = Criteria{}.failures(m, 0);
     nlohmann::json j = metrics_json(m);
     j["a"] = a_path;
     j["b"] = b_path;
-    j["pass"] = failures.empty();
-    j["failures"] = failures;
+    bool pass;
+    if (thresholds) {
+        // idiff's rule (image/thresholds.h): a warning still passes.
+        const ThresholdResult r = compare_thresholds(a, b, *thresholds);
+        pass = r.verdict != Verdict::Fail;
+        const auto bound = [](double v) { return std::isinf(v) ? nlohmann::json(nullptr) : nlohmann::json(v); };
+        j["thresholds"] = {{"fail", thresholds->fail},           {"failpercent", thresholds->fail_percent},
+                           {"hardfail", bound(thresholds->hard_fail)}, {"warn", thresholds->warn},
+                           {"warnpercent", thresholds->warn_percent},  {"hardwarn", bound(thresholds->hard_warn)}};
+        j["verdict"] = verdict_name(r.verdict);
+        j["failing_pixels"] = r.failing;
+        j["warning_pixels"] = r.warning;
+        j["max_error"] = {{"value", bound(r.max_error)}, {"x", r.max_x}, {"y", r.max_y}, {"channel", r.max_channel}};
+        j["failures"] = r.verdict == Verdict::Fail
+                            ? std::vector<std::string>{std::to_string(r.failing) + " pixels beyond " +
+                                                       short_number(thresholds->fail, 6) + ", largest error " +
+                                                       short_number(r.max_error, 6)}
+                            : std::vector<std::string>{};
+    } else {
+        // Without a scene or thresholds there are only the strict default criteria to check.
+        const auto failures = Criteria{}.failures(m, 0);
+        pass = failures.empty();
+        j["failures"] = failures;
+    }
+    j["pass"] = pass;
     if (json) {
         std::cout << json_text(j) << std::endl;
     } else {
         for (const auto& [key, value] : j.items()) std::cout << key << " " << json_text(value) << "\n";
     }
-    return failures.empty() ? 0 : 1;
+    return pass ? 0 : 1;
 }
 
 }  // namespace st

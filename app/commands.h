@@ -4,8 +4,11 @@
 
 #include <set>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "image/thresholds.h"
 
 namespace st {
 
@@ -19,12 +22,19 @@ int cmd_version();
 int cmd_list();
 int cmd_render(const std::vector<std::string>& scenes, const std::string& backend,
                const std::string& out_dir, const CommonOptions& common);
+// `junit`: a JUnit XML file to write, or empty.
 int cmd_compare(const std::vector<std::string>& scenes, const std::string& out_dir, bool json,
-                const CommonOptions& common);
-int cmd_diff(const std::string& a, const std::string& b, const std::string& out_png, bool json);
-int cmd_golden(const std::string& action, const std::vector<std::string>& scenes,
+                const std::string& junit, const CommonOptions& common);
+// Without thresholds the strict default criteria decide; with them, idiff's
+// rule (image/thresholds.h). Exit 0 the same within bounds (a warning
+// included), 1 they differ, 2 an error.
+int cmd_diff(const std::string& a, const std::string& b, const std::string& out_png, bool json,
+             const std::optional<Thresholds>& thresholds);
+int cmd_golden(const std::string& action, const std::vector<std::string>& scenes, const std::string& junit,
                const CommonOptions& common);
-int cmd_report(const std::string& out_dir, int frames, const CommonOptions& common);
+// `scenes`: names, paths or patterns (scene.h); every scene when empty.
+int cmd_report(const std::vector<std::string>& scenes, const std::string& out_dir, int frames,
+               const std::string& junit, const CommonOptions& common);
 int cmd_bench(const std::vector<std::string>& scenes, int frames, bool json, bool scaling, bool per_pass,
               const CommonOptions& common);
 int cmd_optics_figures(const std::string& out_dir, long long photons, int threads);

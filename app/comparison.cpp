@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "app/tool_data.h"
 #include "image/image_io.h"
 
 namespace st {
@@ -109,6 +110,18 @@ nlohmann::json metrics_json(const CompareMetrics& m) {
             {"psnr", m.psnr},
             {"nonfinite", m.nonfinite_a + m.nonfinite_b},
             {"nonfinite_mismatch", m.nonfinite_mismatch}};
+}
+
+void add_junit_cases(JunitReport& junit, const Scene& scene, const SceneComparison& c, const std::string& out_dir,
+                     double seconds) {
+    const std::string classname = "shadertwin." + scene.kind;
+    const std::string reproduce = "reproduce: " + tool_name() + " compare " + scene.name + " --out " + out_dir;
+    junit.add({classname, scene.name, seconds, c.failures,
+               "heat map: " + out_dir + "/" + c.diff_png + "\ncoverage map: " + out_dir + "/" + c.coverage_diff_png +
+                   "\n" + reproduce});
+    for (const OutputComparison& o : c.outputs)
+        junit.add({classname, scene.name + ":" + o.name, 0.0, o.failures,
+                   "heat map: " + out_dir + "/" + o.diff_png + "\n" + reproduce});
 }
 
 nlohmann::json to_json(const SceneComparison& c) {

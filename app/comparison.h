@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/backends.h"
+#include "app/junit.h"
 #include "image/compare.h"
 #include "scene/scene.h"
 
@@ -46,6 +47,10 @@ struct SceneComparison {
 SceneComparison compare_scene(const Scene& scene, Backends& backends, const std::string& out_dir);
 
 nlohmann::json to_json(const SceneComparison& c);
+// The scene's JUnit cases (app/junit.h): the scene and each named output,
+// failures with the heat map's path and the command that reproduces them.
+void add_junit_cases(JunitReport& junit, const Scene& scene, const SceneComparison& c, const std::string& out_dir,
+                     double seconds);
 // The metrics as a JSON object (also used by `diff`).
 nlohmann::json metrics_json(const CompareMetrics& m);
 

@@ -19,6 +19,7 @@ namespace {
 struct ToolData {
     std::vector<std::string> glsl_roots = {SHADERTWIN_GLSL_DIR};
     std::string materials = SHADERTWIN_MATERIALS_DIR;
+    std::string tool_name = "shadertwin";
 };
 
 ToolData& data() {
@@ -53,5 +54,10 @@ void add_glsl_roots(const std::vector<std::string>& roots) {
 
 std::vector<std::string> glsl_roots() { return data().glsl_roots; }
 std::string materials_dir() { return data().materials; }
+
+void set_tool_name(const std::string& name) {
+    if (!name.empty()) data().tool_name = name;
+}
+const std::string& tool_name() { return data().tool_name; }
 
 }  // namespace st

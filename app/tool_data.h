@@ -23,4 +23,9 @@ void add_glsl_roots(const std::vector<std::string>& roots);
 std::vector<std::string> glsl_roots();
 std::string materials_dir();
 
+// The tool's name as its users call it (`shadertwin`, or a user tool's), for
+// the commands that reports and JUnit files quote.
+void set_tool_name(const std::string& name);
+const std::string& tool_name();
+
 }  // namespace st

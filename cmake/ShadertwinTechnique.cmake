@@ -12,6 +12,10 @@
 #
 # The tool has every shadertwin command (render, compare, golden, bench,
 # report, sweep, ...) for the technique's scenes and the built-in ones.
+# With enable_testing(), each of the technique's scenes is also two CTest
+# tests, <NAME>.<scene>.compare (both backends against the scene's
+# criteria) and <NAME>.<scene>.golden (the CPU image against the golden
+# hash), labelled <NAME>, so `ctest -L <NAME>` runs them.
 # Relative paths are taken from the calling CMakeLists.txt's folder.
 
 function(_shadertwin_absolute out)
@@ -102,4 +106,21 @@ const st::TechniqueDeclaration declaration{
 }  // namespace
 ]=])
   target_sources(${ARG_TOOL} PRIVATE ${twins} "${declaration}")
+
+  set(scene_files)
+  foreach(path IN LISTS scenes)
+    if(IS_DIRECTORY "${path}")
+      file(GLOB found CONFIGURE_DEPENDS "${path}/*.json")
+      list(APPEND scene_files ${found})
+    else()
+      list(APPEND scene_files "${path}")
+    endif()
+  endforeach()
+  foreach(file IN LISTS scene_files)
+    cmake_path(GET file STEM LAST_ONLY scene)
+    add_test(NAME ${ARG_NAME}.${scene}.compare
+             COMMAND ${ARG_TOOL} compare ${scene} --out "${CMAKE_CURRENT_BINARY_DIR}/shadertwin-tests")
+    add_test(NAME ${ARG_NAME}.${scene}.golden COMMAND ${ARG_TOOL} golden check ${scene})
+    set_tests_properties(${ARG_NAME}.${scene}.compare ${ARG_NAME}.${scene}.golden PROPERTIES LABELS "${ARG_NAME}")
+  endforeach()
 endfunction()

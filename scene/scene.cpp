@@ -2,6 +2,7 @@
 #include "scene/scene.h"
 
 #include <algorithm>
+#include <fnmatch.h>
 #include <filesystem>
 #include <fstream>
 
@@ -48,6 +49,27 @@ std::vector<std::string> builtin_scene_names() {
     std::vector<std::string> names;
     for (const SceneEntry& e : scene_sources().entries()) names.push_back(e.name);
     return names;
+}
+
+std::vector<std::string> expand_scene_patterns(const std::vector<std::string>& patterns) {
+    std::vector<std::string> out;
+    const auto add = [&out](const std::string& name) {
+        if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
+    };
+    for (const std::string& p : patterns) {
+        if (p.find_first_of("*?[") == std::string::npos) {
+            add(p);
+            continue;
+        }
+        bool matched = false;
+        for (const std::string& name : builtin_scene_names())
+            if (fnmatch(p.c_str(), name.c_str(), 0) == 0) {
+                add(name);
+                matched = true;
+            }
+        if (!matched) throw InputError("no scene matches '" + p + "' (shadertwin list shows them)");
+    }
+    return out;
 }
 
 void apply_override(nlohmann::json& document, const std::string& assignment) {

@@ -42,6 +42,10 @@ void set_quality_resolver(QualityResolver resolver);
 // Every named scene of the tool (scene_sources.h), sorted: the built-in
 // ones and a user tool's own.
 std::vector<std::string> builtin_scene_names();
+// Scene names and paths, with shell patterns (`relief-*`, `*-rgba8-*`)
+// expanded against the named scenes, in the order given (each once). A
+// pattern that matches nothing is refused with InputError.
+std::vector<std::string> expand_scene_patterns(const std::vector<std::string>& patterns);
 
 // Applies "dotted.path=value" to a document: the value is parsed as JSON when
 // it parses (numbers, booleans, arrays), else taken as a string. The parent

@@ -67,6 +67,7 @@ void take_in_techniques(const std::string& executable) {
 int run_tool(int argc, char** argv) {
     std::error_code ec;
     const std::string executable = fs::read_symlink("/proc/self/exe", ec).string();
+    if (argc > 0 && argv[0]) set_tool_name(fs::path(argv[0]).filename().string());
     return run_cli(argc, argv, [&executable] { take_in_techniques(executable); });
 }
 

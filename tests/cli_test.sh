@@ -109,6 +109,89 @@ for line in sys.stdin:
     [ "$a" != "$b" ] || fail "--set did not change the image"
     ;;
 
+  diff_thresholds)
+    # diff's idiff thresholds and its documented exit codes (issue 13).
+    "$bin" render triangles-basic --out "$work/a" >/dev/null
+    "$bin" render triangles-basic --set 'triangles.0.colours.0=[1,0.01,0,1]' --out "$work/b" >/dev/null
+    a="$work/a/triangles-basic.cpu.exr" b="$work/b/triangles-basic.cpu.exr"
+    expect_diff() {
+      local want="$1" verdict="$2"; shift 2
+      set +e; "$bin" diff "$a" "$b" --json "$@" >"$work/diff.json"; local rc=$?; set -e
+      [ "$rc" -eq "$want" ] || fail "diff $*: exit $rc, expected $want: $(cat "$work/diff.json")"
+      [ -z "$verdict" ] || grep -q "\"verdict\":\"$verdict\"" "$work/diff.json" || fail "diff $*: not $verdict: $(cat "$work/diff.json")"
+      echo "ok   diff $*: exit $rc ${verdict}"
+    }
+    # Up to 0.0099 apart in green on 1193 of 4096 pixels, 1470 beyond 1e-6.
+    expect_diff 1 ""                                          # the strict default criteria
+    expect_diff 0 pass --fail 0.01 --warn 0.01                # every difference within both
+    expect_diff 0 warn --fail 0.01                            # within the failure threshold, a warning
+    expect_diff 1 fail --fail 0.001                           # 1193 pixels beyond it
+    expect_diff 0 warn --fail 0.001 --failpercent 30          # 29 % of the pixels may fail
+    expect_diff 1 fail --fail 0.001 --failpercent 30 --hardfail 0.005  # but none by more than 0.005
+    expect_diff 0 pass --fail 0.001 --failpercent 30 --warn 1 # warn at 1: nothing warns
+    python3 - "$work/diff.json" <<'PY' || fail "diff's threshold fields"
+import json, sys
+j = json.loads(open(sys.argv[1]).read())
+assert j["failing_pixels"] == 1193 and j["thresholds"]["failpercent"] == 30 and j["thresholds"]["hardfail"] is None, j
+assert j["max_error"]["channel"] == 1 and abs(j["max_error"]["value"] - 0.009913) < 1e-5, j
+PY
+    "$bin" diff --help | grep -q "Exit codes: 0 the same within bounds (a warning included), 1 the images differ, 2 an error" ||
+      fail "diff --help does not document its exit codes"
+    for v in -1 nan inf 1e400 abc; do
+      expect_refused "diff --fail $v" "is not a finite number >= 0" "$bin" diff "$a" "$b" --fail "$v"
+    done
+    ;;
+  progress)
+    # Long commands show progress on a terminal and nothing when redirected
+    # (issue 13; app/progress.h). `script` gives the command a terminal.
+    "$bin" report triangles-basic triangles-depth --frames 0 --out "$work/r1" >/dev/null 2>"$work/quiet.err"
+    "$bin" bench triangles-basic --frames 2 >/dev/null 2>>"$work/quiet.err"
+    [ ! -s "$work/quiet.err" ] || fail "progress on a redirected stderr: $(cat "$work/quiet.err")"
+    script -qec "'$bin' report triangles-basic triangles-depth --frames 0 --out '$work/r2' >/dev/null" /dev/null >"$work/tty.txt"
+    grep -q "report 1/2 triangles-basic" "$work/tty.txt" && grep -q "report 2/2 triangles-depth" "$work/tty.txt" ||
+      fail "no progress on a terminal: $(od -c "$work/tty.txt" | head)"
+    SHADERTWIN_PROGRESS=0 script -qec "'$bin' report triangles-basic --frames 0 --out '$work/r3' >/dev/null" /dev/null >"$work/off.txt"
+    ! grep -q "report 1/1" "$work/off.txt" || fail "SHADERTWIN_PROGRESS=0 did not silence progress"
+    echo "ok   progress: on a terminal only"
+    ;;
+  ctest_labels)
+    # Each built-in scene is a CTest test labelled by technique; one
+    # technique's run through ctest, and CTest's own sharding splits them.
+    build_dir=$(dirname "$bin")
+    ctest --test-dir "$build_dir" -N -L '^scene$' >"$work/all.txt"
+    [ "$(grep -c 'Test *#[0-9]*: scene\.' "$work/all.txt")" -eq "$(all_scenes | wc -l)" ] || fail "not one test per scene"
+    for shard in 1 2 3; do
+      ctest --test-dir "$build_dir" -N -L '^scene$' -I "$shard,,3" | grep -o 'scene\.[^ ]*' >"$work/shard.$shard"
+    done
+    [ "$(sort "$work"/shard.* | uniq | wc -l)" -eq "$(all_scenes | wc -l)" ] || fail "three shards do not cover every scene once"
+    ctest --test-dir "$build_dir" -L '^thin-slab$' -j 2 --output-on-failure >"$work/run.txt" || { cat "$work/run.txt"; fail "ctest -L thin-slab"; }
+    grep -q "100% tests passed, 0 tests failed out of $(grep -c '"kind": "thin-slab' "$(dirname "$0")"/../scenes/*.json | awk -F: '{s += $2} END {print s}')" "$work/run.txt" ||
+      { cat "$work/run.txt"; fail "ctest -L thin-slab did not run every thin-slab scene"; }
+    echo "ok   $(grep -c 'Test *#' "$work/all.txt") scene tests; ctest -L thin-slab: $(grep -o '[0-9]* tests failed out of [0-9]*' "$work/run.txt")"
+    ;;
+  junit)
+    # --junit on compare and golden check: one case per scene and output,
+    # in a document CI systems read (issue 13); refused paths write nothing.
+    "$bin" compare triangles-basic relief-bloom --out "$work/cmp" --junit "$work/compare.xml" >/dev/null
+    "$bin" golden check triangles-basic relief-bloom --junit "$work/golden.xml" >/dev/null
+    for doc in compare golden; do
+      python3 - "$work/$doc.xml" <<'PY' || fail "$doc's JUnit file"
+import sys, xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+cases = root.findall("./testsuite/testcase")
+names = [c.get("name") for c in cases]
+assert names[:3] == ["triangles-basic", "relief-bloom", "relief-bloom:hdr"], names
+assert len(cases) == int(root.get("tests")) and root.get("failures") == "0", root.attrib
+assert {c.get("classname") for c in cases} == {"shadertwin.triangles", "shadertwin.relief"}
+assert all(c.find("failure") is None for c in cases)
+PY
+      echo "ok   $doc --junit: $(grep -c '<testcase' "$work/$doc.xml") cases"
+    done
+    expect_refused "--junit in a missing folder" "no folder" "$bin" compare triangles-basic --junit "$work/no/such/folder.xml"
+    expect_refused "--junit naming a folder" "is a folder" "$bin" compare triangles-basic --junit "$work"
+    expect_refused_without_out "golden --junit in a missing folder" "no folder" \
+      "$bin" golden check triangles-basic --junit "$work/none/g.xml"
+    ;;
   bad_input)
     expect_bad_input "unknown scene" "$bin" render no-such-scene
     printf '{"kind": "triangles", "width": 8,' >"$work/malformed.json"
@@ -145,7 +228,7 @@ for line in sys.stdin:
       "$(dirname "$0")/../scenes/triangles-basic.json" "$work/deep.json"
     expect_bad_input "a scene nested 200000 deep" "$bin" render "$work/deep.json"
     expect_bad_input "an index of 20 digits" "$bin" render triangles-basic --set 'triangles.99999999999999999999.colour=1'
-    expect_bad_input "an empty number" "$bin" slab --model multipole --sigma-a 0.1 --sigma-s '' --thickness 1
+    expect_refused "an empty number" "an empty value is not a number" "$bin" slab --model multipole --sigma-a 0.1 --sigma-s '' --thickness 1
     expect_bad_input "an empty thread count" "$bin" render triangles-basic --threads ''
     python3 - "$work/huge.png" <<'PY'
 import struct, sys, zlib

@@ -21,3 +21,17 @@ expect_refused() {
   [ -z "$(ls -A "$out")" ] || fail "$what: left files behind: $(ls -A "$out")"
   echo "ok   $what: $(cat "$work/stderr")"
 }
+
+# expect_refused_without_out WHAT EXPECTED COMMAND...: the same for a
+# command that takes no --out (golden): exit 2, one line saying EXPECTED.
+expect_refused_without_out() {
+  local what="$1" expected="$2"; shift 2
+  set +e
+  "$@" >"$work/stdout" 2>"$work/stderr"
+  local rc=$?
+  set -e
+  [ "$rc" -eq 2 ] || fail "$what: exit $rc, expected 2 ($(cat "$work/stderr"))"
+  [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "$what: stderr is not one line: $(cat "$work/stderr")"
+  grep -q -- "$expected" "$work/stderr" || fail "$what: '$(cat "$work/stderr")' does not say '$expected'"
+  echo "ok   $what: $(cat "$work/stderr")"
+}

@@ -62,10 +62,44 @@ echo "ok   wraptwin compare: both scenes bit-identical to llvmpipe"
   { cat "$work/golden.txt"; fail "wraptwin golden check"; }
 [ "$(grep -c ' ok$' "$work/golden.txt")" -eq 3 ] || fail "golden check: $(cat "$work/golden.txt")"
 sed -i 's/"wrap-sphere-back": "[0-9A-F]*"/"wrap-sphere-back": "0000"/' "$project/golden/hashes.json"
-set +e; "$tool" golden check wrap-sphere-back >"$work/golden.txt" 2>&1; rc=$?; set -e
+set +e; "$tool" golden check wrap-sphere-back --junit "$work/golden.xml" >"$work/golden.txt" 2>&1; rc=$?; set -e
 [ "$rc" -eq 1 ] || fail "golden check took a changed hash (exit $rc)"
-echo "ok   wraptwin golden check: its own golden file, a changed hash fails"
+python3 - "$work/golden.xml" <<'PY' || fail "golden check's JUnit file does not say what changed"
+import sys, xml.etree.ElementTree as ET
+cases = ET.parse(sys.argv[1]).getroot().findall("./testsuite/testcase")
+assert [c.get("name") for c in cases] == ["wrap-sphere-back"], cases
+f = cases[0].find("failure")
+assert f is not None and f.get("message").startswith("changed: golden 0000 now "), f.attrib
+assert "wraptwin golden update wrap-sphere-back" in f.text, f.text
+PY
+echo "ok   wraptwin golden check: its own golden file, a changed hash fails (and says so in JUnit)"
+# Its scenes as CTest tests, by technique label (the golden file is intact
+# again first).
+cp "$src/examples/wrap_lighting/golden/hashes.json" "$project/golden/hashes.json"
+ctest --test-dir "$project/build" -L '^wrap$' >"$work/ctest.txt" || { cat "$work/ctest.txt"; fail "ctest -L wrap"; }
+grep -q "100% tests passed, 0 tests failed out of 4" "$work/ctest.txt" || { cat "$work/ctest.txt"; fail "ctest -L wrap: not 4 tests"; }
+echo "ok   ctest -L wrap: compare and golden check of both scenes"
 "$broken" compare broken-scene --out "$work/broken" >/dev/null || fail "the broken technique's own scene"
+# A twin that disagrees: compare fails, and its JUnit case carries the
+# failure line and the heat map.
+set +e
+SHADERTWIN_TEST_BREAK=twin-differs "$broken" compare broken-scene --out "$work/differs" --junit "$work/differs.xml" >/dev/null
+rc=$?
+set -e
+[ "$rc" -eq 1 ] || fail "compare of a twin that differs exited $rc, not 1"
+python3 - "$work/differs.xml" "$work/differs" <<'PY' || fail "compare's JUnit file does not carry the failure"
+import os, sys, xml.etree.ElementTree as ET
+root = ET.parse(sys.argv[1]).getroot()
+assert root.get("tests") == "1" and root.get("failures") == "1", root.attrib
+case = root.find("./testsuite/testcase")
+assert case.get("classname") == "shadertwin.broken" and case.get("name") == "broken-scene", case.attrib
+f = case.find("failure")
+assert "max_diff_8bit" in f.get("message"), f.attrib
+heat = [l.split(": ", 1)[1] for l in f.text.splitlines() if l.startswith("heat map: ")]
+assert heat and os.path.isfile(heat[0]) and heat[0].startswith(sys.argv[2]), f.text
+assert "brokentwin compare broken-scene" in f.text, f.text
+PY
+echo "ok   a twin that differs: compare exits 1, its JUnit case has the failure line and the heat map"
 
 # Refused when the tool starts: one line, exit 2, nothing written (lib.sh).
 for how in twin-twice:"fragment twin 'broken' registered twice" builtin-twin:"vertex twin 'interp' registered twice" \

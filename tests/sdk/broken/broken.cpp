@@ -23,6 +23,15 @@ public:
     }
 };
 
+// A twin that disagrees with broken.frag, for compare's failure path.
+class WrongFragment final : public st::FragmentProgram<WrongFragment> {
+public:
+    uint32_t inputs_read() const override { return 0; }
+    st::Vec4 main(const st::Fragment&) const {
+        return st::Vec4(st::Float(1.0f), st::Float(0.5f), st::Float(0.5f), st::Float(1.0f));
+    }
+};
+
 st::Frame build_broken_scene(st::JsonReader&, st::SceneSize size) {
     st::DrawCall draw;
     draw.vertex = draw.fragment = "broken";
@@ -44,7 +53,8 @@ SHADERTWIN_TECHNIQUE(broken, technique) {
     const char* env = std::getenv("SHADERTWIN_TEST_BREAK");
     const std::string how = env ? env : "";
     technique.vertex_twin<BrokenVertex>("broken");
-    technique.fragment_twin<BrokenFragment>("broken");
+    if (how == "twin-differs") technique.fragment_twin<WrongFragment>("broken");
+    else technique.fragment_twin<BrokenFragment>("broken");
     technique.scene_kind("broken", build_broken_scene);
     if (how == "twin-twice") technique.fragment_twin<BrokenFragment>("broken");
     if (how == "builtin-twin") technique.vertex_twin<BrokenVertex>("interp");
