@@ -10,6 +10,7 @@ packages=(
   libglm-dev libopenimageio-dev openimageio-tools libopenexr-dev
   libgtest-dev libbenchmark-dev libosmesa6-dev
   nlohmann-json3-dev libcli11-dev libkissfft-dev
+  chromium  # cli.report_page opens the report in headless Chromium, as a user would
 )
 if [ "${1:-}" = clang ]; then
   packages+=(clang libclang-rt-14-dev llvm)

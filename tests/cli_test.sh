@@ -141,6 +141,44 @@ PY
       expect_refused "diff --fail $v" "is not a finite number >= 0" "$bin" diff "$a" "$b" --fail "$v"
     done
     ;;
+  report_page)
+    # The report as a user opens it (issue 13): headless Chromium loads the
+    # page with no console message and every image, the summary's counts
+    # are what compare --json says, and a screenshot is kept beside the
+    # test output (build/test-output/report.png).
+    scenes="relief-bloom triangles-basic triangles-texture-rgba8-* conformance-cube-rgba8-linear"
+    "$bin" report $scenes --frames 2 --out "$work/rp" --junit "$work/rp.xml" >"$work/rp.md"
+    "$bin" compare relief-bloom triangles-basic $("$bin" list | grep '^triangles-texture-rgba8-') conformance-cube-rgba8-linear \
+      --json --out "$work/cmp" >"$work/cmp.jsonl"
+    chrome() { chromium --headless=new --no-sandbox --disable-gpu --enable-logging=stderr --v=0 "$@"; }
+    chrome --virtual-time-budget=10000 --dump-dom "file://$work/rp/index.html" >"$work/dom.html" 2>"$work/chrome.err"
+    keep="$(dirname "$bin")/test-output"
+    mkdir -p "$keep"
+    chrome --window-size=1280,1600 --screenshot="$keep/report.png" "file://$work/rp/index.html" 2>>"$work/chrome.err"
+    [ -s "$keep/report.png" ] || fail "no screenshot"
+    ! grep -i "CONSOLE" "$work/chrome.err" || fail "the page logged to the console"
+    python3 - "$work/dom.html" "$work/cmp.jsonl" "$work/rp.xml" <<'PY' || fail "the report page"
+import json, re, sys, xml.etree.ElementTree as ET
+dom = open(sys.argv[1]).read()
+rows = [json.loads(l) for l in open(sys.argv[2])]
+images = re.search(r'id="images"[^>]*data-loaded="(\d+)"[^>]*data-total="(\d+)"', dom) or \
+         re.search(r'id="images"[^>]*data-total="(\d+)"[^>]*data-loaded="(\d+)"', dom)
+assert images, "the page's image check did not run"
+loaded, total = sorted(map(int, images.groups()))
+assert loaded == total and total > 6 * len(rows), (loaded, total)
+counts = re.search(r'id="counts" data-scenes="(\d+)" data-failed="(\d+)"', dom)
+assert (int(counts.group(1)), int(counts.group(2))) == (len(rows), sum(not r["pass"] for r in rows)), counts.groups()
+summary = dom[dom.index('id="summary"'):]
+summary = summary[:summary.index("</table>")]
+assert summary.count('<tr class="passed">') == sum(r["pass"] for r in rows), "summary rows"
+for r in rows:
+    assert 'href="#s-%s"' % r["scene"] in summary, r["scene"]
+assert dom.count("<details") == len(rows)
+junit = ET.parse(sys.argv[3]).getroot()
+assert junit.get("failures") == "0" and int(junit.get("tests")) >= len(rows)
+print("ok   report page: %d scenes, %d of %d images loaded, no console message" % (len(rows), loaded, total))
+PY
+    ;;
   progress)
     # Long commands show progress on a terminal and nothing when redirected
     # (issue 13; app/progress.h). `script` gives the command a terminal.

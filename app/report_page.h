@@ -1,0 +1,35 @@
+// report_page.h: the HTML page of `report` (index.html), one folder that
+// works offline: a summary table first (failures first), each scene's
+// detail folded under it with the CPU and llvmpipe images, heat map and
+// condition map at a size that shows pixels, a wipe and flip between CPU and
+// llvmpipe, real tables of metrics and costs, and the commands that
+// reproduce the scene and update its golden hash.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/bench.h"
+#include "app/comparison.h"
+#include "scene/scene.h"
+
+namespace st {
+
+struct ReportEntry {
+    std::string scene, kind;
+    SceneComparison comparison;
+    std::optional<BenchResult> cost;  // when report timed frames
+};
+
+struct ReportHeader {
+    std::string tool;       // the command users call (tool_data.h)
+    std::string provenance; // versions, renderer, CPU flags
+    std::string out_dir;    // as given, for the commands shown
+    int frames = 0;         // timed frames per backend, 0: none
+};
+
+// `entries` in the order shown: failures first.
+std::string report_page(const ReportHeader& header, const std::vector<ReportEntry>& entries);
+
+}  // namespace st
