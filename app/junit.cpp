@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "app/markup_text.h"
 #include "image/image_io.h"
 #include "scene/input_error.h"
 
@@ -15,55 +16,6 @@ namespace st {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Length of the valid UTF-8 sequence at s[i], or 0.
-size_t utf8_length(const std::string& s, size_t i) {
-    const auto byte = [&](size_t k) { return k < s.size() ? static_cast<unsigned char>(s[k]) : 0u; };
-    const unsigned c = byte(i);
-    const auto cont = [&](size_t k) { return (byte(k) & 0xC0u) == 0x80u; };
-    if (c < 0x80) return 1;
-    if (c >= 0xC2 && c <= 0xDF) return cont(i + 1) ? 2 : 0;
-    if (c >= 0xE0 && c <= 0xEF) {
-        const unsigned c1 = byte(i + 1);
-        if ((c == 0xE0 && c1 < 0xA0) || (c == 0xED && c1 > 0x9F)) return 0;  // overlong, surrogates
-        return cont(i + 1) && cont(i + 2) ? 3 : 0;
-    }
-    if (c >= 0xF0 && c <= 0xF4) {
-        const unsigned c1 = byte(i + 1);
-        if ((c == 0xF0 && c1 < 0x90) || (c == 0xF4 && c1 > 0x8F)) return 0;
-        return cont(i + 1) && cont(i + 2) && cont(i + 3) ? 4 : 0;
-    }
-    return 0;
-}
-
-std::string xml_text(const std::string& in) {
-    static const std::string kReplacement = "\xEF\xBF\xBD";
-    std::string out;
-    for (size_t i = 0; i < in.size();) {
-        const size_t n = utf8_length(in, i);
-        if (n == 0) {
-            out += kReplacement;
-            ++i;
-            continue;
-        }
-        const unsigned char c = static_cast<unsigned char>(in[i]);
-        if (n == 1) {
-            switch (c) {
-                case '&': out += "&amp;"; break;
-                case '<': out += "&lt;"; break;
-                case '>': out += "&gt;"; break;
-                case '"': out += "&quot;"; break;
-                case '\'': out += "&apos;"; break;
-                case '\t': case '\n': case '\r': out += char(c); break;
-                default: out += c < 0x20 || c == 0x7F ? kReplacement : std::string(1, char(c));
-            }
-        } else {
-            out.append(in, i, n);
-        }
-        i += n;
-    }
-    return out;
-}
 
 std::string seconds(double s) {
     std::ostringstream o;
@@ -90,16 +42,16 @@ std::string JunitReport::xml() const {
     const std::string counts = " tests=\"" + std::to_string(cases_.size()) + "\" failures=\"" +
                                std::to_string(failures) + "\" errors=\"0\" time=\"" + seconds(total) + "\"";
     x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<testsuites name=\"" << xml_text(suite_) << "\"" << counts << ">\n"
-      << "  <testsuite name=\"" << xml_text(suite_) << "\"" << counts << ">\n";
+      << "<testsuites name=\"" << markup_text(suite_) << "\"" << counts << ">\n"
+      << "  <testsuite name=\"" << markup_text(suite_) << "\"" << counts << ">\n";
     for (const JunitCase& c : cases_) {
-        x << "    <testcase classname=\"" << xml_text(c.classname) << "\" name=\"" << xml_text(c.name)
+        x << "    <testcase classname=\"" << markup_text(c.classname) << "\" name=\"" << markup_text(c.name)
           << "\" time=\"" << seconds(c.seconds) << "\"";
         if (c.failures.empty()) {
             x << "/>\n";
             continue;
         }
-        x << ">\n      <failure message=\"" << xml_text(joined(c.failures)) << "\">" << xml_text(c.detail)
+        x << ">\n      <failure message=\"" << markup_text(joined(c.failures)) << "\">" << markup_text(c.detail)
           << "</failure>\n    </testcase>\n";
     }
     x << "  </testsuite>\n</testsuites>\n";

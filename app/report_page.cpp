@@ -8,26 +8,12 @@
 #include <sstream>
 
 #include "app/json_text.h"
+#include "app/markup_text.h"
 #include "app/short_number.h"
 
 namespace st {
 
 namespace {
-
-std::string esc(const std::string& in) {
-    std::string out;
-    for (char ch : in) {
-        switch (ch) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&#39;"; break;
-            default: out += ch;
-        }
-    }
-    return out;
-}
 
 std::string percent(double fraction) {
     std::ostringstream s;
@@ -96,15 +82,15 @@ void image_figure(std::ostringstream& h, const std::string& src, const std::stri
         ht = std::max(1, int(std::lround(double(ht) * kStripWidth / w)));
         w = kStripWidth;
     }
-    h << "<figure><a href=\"" << esc(src) << "\"><img src=\"" << esc(src) << "\" width=\"" << w << "\" height=\""
-      << ht << "\" alt=\"" << esc(caption) << "\"></a><figcaption>" << esc(caption) << "</figcaption></figure>";
+    h << "<figure><a href=\"" << markup_text(src) << "\"><img src=\"" << markup_text(src) << "\" width=\"" << w << "\" height=\""
+      << ht << "\" alt=\"" << markup_text(caption) << "\"></a><figcaption>" << markup_text(caption) << "</figcaption></figure>";
 }
 
 // CPU over llvmpipe, wiped or flipped.
 void viewer(std::ostringstream& h, const std::string& cpu, const std::string& gl, int width, int height, int scale) {
     const std::string size = "width=\"" + std::to_string(width * scale) + "\" height=\"" + std::to_string(height * scale) + "\"";
-    h << "<div class=\"viewer-box\"><div class=\"viewer\"><img src=\"" << esc(gl) << "\" " << size
-      << " alt=\"llvmpipe\"><img class=\"top\" src=\"" << esc(cpu) << "\" " << size << " alt=\"CPU\"></div>"
+    h << "<div class=\"viewer-box\"><div class=\"viewer\"><img src=\"" << markup_text(gl) << "\" " << size
+      << " alt=\"llvmpipe\"><img class=\"top\" src=\"" << markup_text(cpu) << "\" " << size << " alt=\"CPU\"></div>"
       << "<div class=\"controls\"><input type=\"range\" min=\"0\" max=\"100\" value=\"50\" aria-label=\"wipe\"> "
       << "<button type=\"button\">flip</button> <span class=\"showing\">wipe: CPU left, llvmpipe right</span></div></div>";
 }
@@ -113,8 +99,8 @@ void metrics_table(std::ostringstream& h, const nlohmann::json& j) {
     h << "<table class=\"metrics\"><tr><th>metric</th><th>value</th></tr>";
     for (const auto& [key, value] : j.items()) {
         if (key == "failures" || key == "scene" || key == "outputs" || key == "pass") continue;
-        h << "<tr><td>" << esc(key) << "</td><td class=\"num\">"
-          << esc(value.is_string() ? value.get<std::string>() : json_text(value)) << "</td></tr>";
+        h << "<tr><td>" << markup_text(key) << "</td><td class=\"num\">"
+          << markup_text(value.is_string() ? value.get<std::string>() : json_text(value)) << "</td></tr>";
     }
     h << "</table>";
 }
@@ -130,7 +116,7 @@ std::string report_page(const ReportHeader& header, const std::vector<ReportEntr
     const long failed = std::count_if(entries.begin(), entries.end(), [](auto& e) { return !e.comparison.pass(); });
     std::ostringstream h;
     h << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>shadertwin report</title><style>"
-      << kStyle << "</style></head><body>\n<h1>shadertwin report</h1><p class=\"meta\">" << esc(header.provenance)
+      << kStyle << "</style></head><body>\n<h1>shadertwin report</h1><p class=\"meta\">" << markup_text(header.provenance)
       << "</p>\n<p id=\"counts\" data-scenes=\"" << entries.size() << "\" data-failed=\"" << failed << "\">"
       << entries.size() - size_t(failed) << " of " << entries.size() << " scenes pass"
       << (failed ? ", " + std::to_string(failed) + " fail" : std::string()) << ".</p>\n";
@@ -141,8 +127,8 @@ std::string report_page(const ReportHeader& header, const std::vector<ReportEntr
          "<th>fps, CPU / llvmpipe</th></tr>\n";
     for (const ReportEntry& e : entries) {
         const SceneComparison& c = e.comparison;
-        h << "<tr class=\"" << (c.pass() ? "passed" : "failed") << "\"><td><a href=\"#" << esc(anchor(e.scene)) << "\">"
-          << esc(e.scene) << "</a></td><td>" << esc(e.kind) << "</td><td class=\"" << (c.pass() ? "pass\">pass" : "fail\">FAIL")
+        h << "<tr class=\"" << (c.pass() ? "passed" : "failed") << "\"><td><a href=\"#" << markup_text(anchor(e.scene)) << "\">"
+          << markup_text(e.scene) << "</a></td><td>" << markup_text(e.kind) << "</td><td class=\"" << (c.pass() ? "pass\">pass" : "fail\">FAIL")
           << "</td><td class=\"num\">" << percent(c.metrics.identical_fraction_float) << "</td><td class=\"num\">"
           << percent(c.metrics.identical_fraction_8bit) << "</td><td class=\"num\">" << c.metrics.max_diff_8bit
           << "</td><td class=\"num\">" << short_number(c.metrics.max_rel_diff_float, 3) << "</td><td class=\"num\">"
@@ -158,10 +144,10 @@ std::string report_page(const ReportHeader& header, const std::vector<ReportEntr
         const SceneComparison& c = e.comparison;
         const int scale = display_scale(c.metrics.width);
         const int w = c.metrics.width, ht = c.metrics.height;
-        h << "<details id=\"" << esc(anchor(e.scene)) << "\"" << (c.pass() ? "" : " open") << "><summary><b>"
-          << esc(e.scene) << "</b> (" << esc(e.kind) << ") <span class=\"" << (c.pass() ? "pass\">pass" : "fail\">FAIL")
+        h << "<details id=\"" << markup_text(anchor(e.scene)) << "\"" << (c.pass() ? "" : " open") << "><summary><b>"
+          << markup_text(e.scene) << "</b> (" << markup_text(e.kind) << ") <span class=\"" << (c.pass() ? "pass\">pass" : "fail\">FAIL")
           << "</span></summary>\n";
-        for (const auto& f : c.failures) h << "<p class=\"fail\">" << esc(f) << "</p>";
+        for (const auto& f : c.failures) h << "<p class=\"fail\">" << markup_text(f) << "</p>";
         viewer(h, c.cpu_png, c.gl_png, w, ht, scale);
         h << "<div class=\"strip\">";
         image_figure(h, c.cpu_png, "CPU (twins)", w, ht, scale);
@@ -173,9 +159,9 @@ std::string report_page(const ReportHeader& header, const std::vector<ReportEntr
         metrics_table(h, to_json(c));
         for (const OutputComparison& o : c.outputs) {
             const int os = display_scale(o.metrics.width);
-            h << "<h3>" << esc(o.name) << " <span class=\"" << (o.failures.empty() ? "pass\">pass" : "fail\">FAIL")
+            h << "<h3>" << markup_text(o.name) << " <span class=\"" << (o.failures.empty() ? "pass\">pass" : "fail\">FAIL")
               << "</span></h3>";
-            for (const auto& f : o.failures) h << "<p class=\"fail\">" << esc(f) << "</p>";
+            for (const auto& f : o.failures) h << "<p class=\"fail\">" << markup_text(f) << "</p>";
             viewer(h, o.cpu_png, o.gl_png, o.metrics.width, o.metrics.height, os);
             h << "<div class=\"strip\">";
             image_figure(h, o.cpu_png, "CPU", o.metrics.width, o.metrics.height, os);
@@ -193,14 +179,14 @@ std::string report_page(const ReportHeader& header, const std::vector<ReportEntr
               << r.cpu_threads << " threads</td><td class=\"num\">" << short_number(r.cpu.fps(), 4)
               << "</td><td class=\"num\">" << short_number(r.cpu.ms_median, 4) << "</td><td class=\"num\">"
               << short_number(r.cpu.ms_min, 4) << "</td><td class=\"num\">" << short_number(r.cpu.ms_max, 4)
-              << "</td></tr><tr><td>llvmpipe, LP_NUM_THREADS " << esc(r.gl_threads) << "</td><td class=\"num\">"
+              << "</td></tr><tr><td>llvmpipe, LP_NUM_THREADS " << markup_text(r.gl_threads) << "</td><td class=\"num\">"
               << short_number(r.gl.fps(), 4) << "</td><td class=\"num\">" << short_number(r.gl.ms_median, 4)
               << "</td><td class=\"num\">" << short_number(r.gl.ms_min, 4) << "</td><td class=\"num\">"
               << short_number(r.gl.ms_max, 4) << "</td></tr></table>";
         }
-        h << "<pre><code>" << esc(header.tool) << " compare " << esc(e.scene) << " --out " << esc(header.out_dir)
+        h << "<pre><code>" << markup_text(header.tool) << " compare " << markup_text(e.scene) << " --out " << markup_text(header.out_dir)
           << "     # reproduce\n"
-          << esc(header.tool) << " golden update " << esc(e.scene) << "     # accept the CPU image as the golden one"
+          << markup_text(header.tool) << " golden update " << markup_text(e.scene) << "     # accept the CPU image as the golden one"
           << "</code></pre></details>\n";
     }
     h << "<p id=\"images\" class=\"meta\"></p><script>" << kScript << "</script>\n</body></html>\n";
