@@ -10,8 +10,8 @@ namespace st {
 
 const char* backend_name(Backend b) { return b == Backend::Cpu ? "cpu" : "gl"; }
 
-Backends::Backends(int threads, std::vector<std::string> glsl_roots)
-    : threads_(threads), glsl_roots_(std::move(glsl_roots)) {}
+Backends::Backends(int threads, GlPlatform gl_platform, std::vector<std::string> glsl_roots)
+    : threads_(threads), gl_platform_(gl_platform), glsl_roots_(std::move(glsl_roots)) {}
 Backends::~Backends() = default;
 
 CpuRenderer& Backends::cpu() {
@@ -20,12 +20,13 @@ CpuRenderer& Backends::cpu() {
 }
 
 GlRenderer& Backends::gl() {
-    if (!gl_) gl_ = std::make_unique<GlRenderer>(glsl_roots_);
+    if (!gl_) gl_ = std::make_unique<GlRenderer>(glsl_roots_, gl_platform_);
     return *gl_;
 }
 
 std::string Backends::gl_renderer() { return gl().renderer(); }
 std::string Backends::gl_version() { return gl().version(); }
+GlPlatform Backends::gl_platform() { return gl().platform(); }
 
 namespace {
 
@@ -70,6 +71,7 @@ Metadata Backends::provenance(Backend backend) {
     } else {
         m["renderer"] = gl_renderer();
         m["gl_version"] = gl_version();
+        m["gl_platform"] = gl_platform_name(gl_platform());
     }
     return m;
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "frame/frame.h"
+#include "gl/gl_platform.h"
 #include "image/image.h"
 #include "image/image_io.h"
 #include "raster/stage_times.h"
@@ -36,7 +37,7 @@ struct Rendered {
 
 class Backends {
 public:
-    Backends(int threads, std::vector<std::string> glsl_roots);
+    Backends(int threads, GlPlatform gl_platform, std::vector<std::string> glsl_roots);
     ~Backends();
 
     Rendered render(Backend backend, const Frame& frame);
@@ -45,12 +46,15 @@ public:
     // GL_RENDERER and GL_VERSION (creates the GL context if needed).
     std::string gl_renderer();
     std::string gl_version();
+    // The platform the GL context got (creates it if needed): never Auto.
+    GlPlatform gl_platform();
 
     CpuRenderer& cpu();
     GlRenderer& gl();
 
 private:
     int threads_;
+    GlPlatform gl_platform_;
     std::vector<std::string> glsl_roots_;
     std::unique_ptr<CpuRenderer> cpu_;
     std::unique_ptr<GlRenderer> gl_;

@@ -18,7 +18,7 @@
 
 namespace {
 
-void add_common(CLI::App* cmd, st::CommonOptions& common) {
+void add_common(CLI::App* cmd, st::CommonOptions& common, bool& gl_given) {
     cmd->add_option("--set", common.overrides, "override a scene field: PATH=VALUE (repeatable)");
     cmd->add_option("--threads", common.threads, "CPU worker threads")
         ->check(CLI::Range(1, 256))
@@ -34,6 +34,19 @@ void add_common(CLI::App* cmd, st::CommonOptions& common) {
            },
            "refuse a scene whose estimated peak memory exceeds SIZE (4G, 512M); default: what the machine allows")
         ->type_name("SIZE");
+    cmd->add_option_function<std::string>(
+           "--gl",
+           [&common, &gl_given](const std::string& name) {
+               try {
+                   common.gl_platform = st::parse_gl_platform(name);
+                   gl_given = true;
+               } catch (const std::exception& e) {
+                   throw CLI::ValidationError(e.what());
+               }
+           },
+           "GL reference platform: auto (OSMesa if it loads, else EGL), osmesa or egl; default: "
+           "SHADERTWIN_GL, else auto")
+        ->type_name("PLATFORM");
 }
 
 }  // namespace
@@ -47,6 +60,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     app.add_flag("--version", version, "versions of shadertwin, Mesa and LLVM, and CPU flags");
 
     st::CommonOptions common;
+    bool gl_given = false;  // --gl on the command line; else SHADERTWIN_GL decides
     std::vector<std::string> scenes;
     std::string backend = "cpu", out_dir = "out", out_png, action;
     bool json = false;
@@ -58,7 +72,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     render->add_option("scenes", scenes, "built-in scene names or .json paths")->required();
     render->add_option("--backend", backend, "cpu or gl")->check(CLI::IsMember({"cpu", "gl"}));
     render->add_option("--out", out_dir, "output folder");
-    add_common(render, common);
+    add_common(render, common, gl_given);
 
     auto* compare = app.add_subcommand("compare", "render on both backends and compare");
     compare->add_option("scenes", scenes, "built-in scene names or .json paths")->required();
@@ -66,7 +80,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     compare->add_flag("--json", json, "one JSON object per scene");
     std::string junit;
     compare->add_option("--junit", junit, "also write JUnit XML: a test case per scene and output")->type_name("FILE");
-    add_common(compare, common);
+    add_common(compare, common, gl_given);
 
     auto* diff = app.add_subcommand("diff", "compare two image files");
     diff->add_option("a", diff_a, "first image (taken as the CPU side)")->required();
@@ -103,7 +117,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     golden->add_option("action", action, "check or update")->required()->check(CLI::IsMember({"check", "update"}));
     golden->add_option("scenes", scenes, "scenes (default: every built-in scene)");
     golden->add_option("--junit", junit, "also write JUnit XML: a test case per scene and output")->type_name("FILE");
-    add_common(golden, common);
+    add_common(golden, common, gl_given);
 
     int frames = 100;
     auto* bench = app.add_subcommand("bench", "frames per second on both backends, interleaved");
@@ -116,7 +130,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     bench->add_flag("--passes", per_pass,
                     "also time each pass on both backends (the frame cut after each, interleaved) and list the "
                     "profiles' build times apart");
-    add_common(bench, common);
+    add_common(bench, common, gl_given);
 
     st::SlabOptions slab_options;
     std::vector<CLI::Option*> eta_below_given;  // its default is --eta, so "unset" must not be a value
@@ -182,7 +196,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
         "every built-in profile scene)");
     sweep->add_option("--out", out_dir, "output folder (CSV, SVG charts, Markdown)");
     sweep->add_option("--frames", sweep_frames, "relief, profile: timed rounds per setting (medians)")->check(CLI::Range(1, 1000));
-    add_common(sweep, common);
+    add_common(sweep, common, gl_given);
 
     int report_frames = 10;
     auto* report = app.add_subcommand("report", "scenes on both backends, compared and timed, as an HTML page");
@@ -191,7 +205,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     report->add_option("--junit", junit, "also write JUnit XML: a test case per scene and output")->type_name("FILE");
     report->add_option("--frames", report_frames, "frames per backend for the cost table (0: none)")
         ->check(CLI::Range(0, 100000));
-    add_common(report, common);
+    add_common(report, common, gl_given);
 
     // An empty value is no number (CLI11 would take it as 0): every numeric
     // option of every command checks that its value parses as one.
@@ -216,9 +230,10 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
 
     try {
         if (setup) setup();
+        if (!gl_given) common.gl_platform = st::gl_platform_from_environment();
         // A scene's `quality: auto` is resolved by rendering candidates (app/profile_quality.h).
-        st::install_quality_resolver(common.threads);
-        if (version) return st::cmd_version();
+        st::install_quality_resolver(common.threads, common.gl_platform);
+        if (version) return st::cmd_version(common.gl_platform);
         if (app.got_subcommand("list")) return st::cmd_list();
         if (*render) return st::cmd_render(scenes, backend, out_dir, common);
         if (*compare) return st::cmd_compare(scenes, out_dir, json, junit, common);

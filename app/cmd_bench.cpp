@@ -23,7 +23,7 @@ int cmd_bench(const std::vector<std::string>& names, int frames, bool json, bool
     for (const auto& n : names) scenes.push_back(load_scene(n, common.overrides));
     check_memory(scenes, MemoryUse::BothBackends, common.max_memory);
     set_llvmpipe_threads(common.threads);
-    Backends backends(common.threads, glsl_roots());
+    Backends backends(common.threads, common.gl_platform, glsl_roots());
     std::unique_ptr<CpuRenderer> one_thread;
     if (scaling) one_thread = std::make_unique<CpuRenderer>(1, twins());
     if (!json)

@@ -45,7 +45,7 @@ int cmd_golden(const std::string& action, const std::vector<std::string>& names_
         }
     }
 
-    Backends backends(common.threads, glsl_roots());
+    Backends backends(common.threads, common.gl_platform, glsl_roots());
     std::vector<std::string> changed;
     JunitReport junit("shadertwin golden " + action);
     for (const Scene& scene : scenes) {

@@ -86,7 +86,7 @@ int cmd_report(const std::vector<std::string>& patterns, const std::string& out_
     if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
 
     set_llvmpipe_threads(common.threads);
-    Backends backends(common.threads, glsl_roots());
+    Backends backends(common.threads, common.gl_platform, glsl_roots());
     std::vector<SceneComparison> results;
     std::vector<ReportEntry> entries;
     std::vector<BenchResult> costs;

@@ -78,7 +78,7 @@ int cmd_sweep(const std::string& technique, const std::string& out_dir, const Co
     std::filesystem::create_directories(out_dir, ec);
     if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
 
-    Backends backends(common.threads, glsl_roots());
+    Backends backends(common.threads, common.gl_platform, glsl_roots());
     const Image cpu = backends.render(Backend::Cpu, scene.frame).image;
     const Image gl = backends.render(Backend::Gl, scene.frame).image;
     const auto rows = thin_slab_sweep_rows(cpu.width);

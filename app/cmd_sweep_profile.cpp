@@ -141,7 +141,7 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
     std::filesystem::create_directories(out_dir, ec);
     if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
 
-    Backends backends(common.threads, glsl_roots());
+    Backends backends(common.threads, common.gl_platform, glsl_roots());
     std::vector<Result> results(all.size());
     std::vector<Image> images(all.size());
     for (size_t i = 0; i < all.size(); ++i) {

@@ -40,7 +40,7 @@ int cmd_sweep_quality(const std::vector<std::string>& scene_names, const std::st
         std::filesystem::create_directories(out_dir, ec);
         if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
     }
-    Backends backends(common.threads, glsl_roots());
+    Backends backends(common.threads, common.gl_platform, glsl_roots());
     std::ostringstream md, csv;
     md << "# Diffusion profiles: the cheapest model and sample count per scene\n\n`shadertwin sweep profile-quality "
           "--frames "

@@ -182,7 +182,7 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
     // surface ends at a horizon (the clear pixels are not counted).
     const std::vector<double> angles = {30, 60, 75, 85};
     const std::vector<Setting> all = settings();
-    Backends backends(common.threads, glsl_roots());
+    Backends backends(common.threads, common.gl_platform, glsl_roots());
     const ReliefSweepTwins sweep_twins;
     CpuRenderer exact_renderer(common.threads, sweep_twins);
 

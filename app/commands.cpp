@@ -1,6 +1,7 @@
 // commands.cpp: version, list, render, compare and diff.
 #include "app/commands.h"
 
+#include <cstdlib>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -65,14 +66,25 @@ void print_human(const SceneComparison& c) {
 
 }  // namespace
 
-int cmd_version() {
-    Backends backends(1, glsl_roots());
+GlPlatform gl_platform_from_environment() {
+    const char* name = std::getenv("SHADERTWIN_GL");
+    if (!name || !*name) return GlPlatform::Auto;
+    try {
+        return parse_gl_platform(name);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("SHADERTWIN_GL: ") + e.what());
+    }
+}
+
+int cmd_version(GlPlatform gl_platform) {
+    Backends backends(1, gl_platform, glsl_roots());
     const std::string renderer = backends.gl_renderer(), version = backends.gl_version();
     std::cout << "shadertwin " << shadertwin_version() << "\n"
               << "mesa " << mesa_version(version) << "\n"
               << "llvm " << llvm_version(renderer) << "\n"
               << "gl_renderer " << renderer << "\n"
               << "gl_version " << version << "\n"
+              << "gl_platform " << gl_platform_name(backends.gl_platform()) << "\n"
               << "cpu_flags " << cpu_flags() << "\n";
     return 0;
 }
@@ -89,7 +101,7 @@ int cmd_render(const std::vector<std::string>& names, const std::string& backend
     std::vector<uint64_t> estimates;
     const auto scenes = load_all(names, common, use, estimates);
     make_dir(out_dir);
-    Backends backends(common.threads, glsl_roots());
+    Backends backends(common.threads, common.gl_platform, glsl_roots());
     for (size_t i = 0; i < scenes.size(); ++i) {
         const Scene& scene = scenes[i];
         reset_peak_resident();
@@ -104,6 +116,7 @@ int cmd_render(const std::vector<std::string>& names, const std::string& backend
             j["outputs"].push_back({{"name", o.name}, {"width", o.image.width}, {"height", o.image.height},
                                     {"hash", pixel_hash(o.image)}});
         }
+        if (backend == Backend::Gl) j["gl_platform"] = gl_platform_name(backends.gl_platform());
         if (backend == Backend::Cpu)
             j["stages"] = {{"vertex", r.stages.vertex_ms},       {"setup_binning", r.stages.setup_ms},
                            {"rasterization", r.stages.raster_ms}, {"fragment", r.stages.fragment_ms},
@@ -120,7 +133,7 @@ int cmd_compare(const std::vector<std::string>& names, const std::string& out_di
     std::vector<uint64_t> estimates;
     const auto scenes = load_all(names, common, MemoryUse::Compare, estimates);
     make_dir(out_dir);
-    Backends backends(common.threads, glsl_roots());
+    Backends backends(common.threads, common.gl_platform, glsl_roots());
     JunitReport junit("shadertwin compare");
     bool all_pass = true;
     for (size_t i = 0; i < scenes.size(); ++i) {

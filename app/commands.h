@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/gl_platform.h"
 #include "image/thresholds.h"
 
 namespace st {
@@ -16,9 +17,14 @@ struct CommonOptions {
     std::vector<std::string> overrides;  // --set PATH=VALUE
     int threads = 2;                     // --threads N
     uint64_t max_memory = 0;             // --max-memory SIZE in bytes; 0: the machine's limits only
+    GlPlatform gl_platform = GlPlatform::Auto;  // --gl, else SHADERTWIN_GL, else auto
 };
 
-int cmd_version();
+// SHADERTWIN_GL when set (auto, osmesa or egl), else auto. Throws
+// std::invalid_argument on any other value.
+GlPlatform gl_platform_from_environment();
+
+int cmd_version(GlPlatform gl_platform);
 int cmd_list();
 int cmd_render(const std::vector<std::string>& scenes, const std::string& backend,
                const std::string& out_dir, const CommonOptions& common);

@@ -209,8 +209,8 @@ void remember_quality_choice(const nlohmann::json& document, const QualityChoice
     store_cached_record(choice_key(document), choice.model() + " " + std::to_string(choice.samples()));
 }
 
-void install_quality_resolver(int threads) {
-    set_quality_resolver([threads](const std::string& name, nlohmann::json& document) {
+void install_quality_resolver(int threads, GlPlatform gl_platform) {
+    set_quality_resolver([threads, gl_platform](const std::string& name, nlohmann::json& document) {
         if (const auto cached = load_cached_record(choice_key(document))) {
             std::istringstream in(*cached);
             std::string model;
@@ -223,7 +223,7 @@ void install_quality_resolver(int threads) {
         static std::mutex mutex;
         static std::unique_ptr<Backends> backends;
         std::lock_guard<std::mutex> lock(mutex);
-        if (!backends) backends = std::make_unique<Backends>(threads, glsl_roots());
+        if (!backends) backends = std::make_unique<Backends>(threads, gl_platform, glsl_roots());
         const QualityChoice choice = measure_quality(*backends, name, document, 3);
         remember_quality_choice(document, choice);
         document = with_choice(document, choice.model(), choice.samples());

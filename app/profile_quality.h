@@ -25,6 +25,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gl/gl_platform.h"
+
 namespace st {
 
 class Backends;
@@ -81,6 +83,6 @@ void remember_quality_choice(const nlohmann::json& document, const QualityChoice
 // Makes load_scene resolve `quality: auto` (scene.h): measured once per
 // scene document and budget, then kept in the profile cache
 // (scene/profile_cache.h). Renders with `threads` CPU threads.
-void install_quality_resolver(int threads);
+void install_quality_resolver(int threads, GlPlatform gl_platform);
 
 }  // namespace st

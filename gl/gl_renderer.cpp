@@ -3,11 +3,8 @@
 // Mirrors raster/cpu_renderer.cpp step for step: same targets (RGBA32F and
 // 32-bit float depth), same clear, same draw order, same blend and depth
 // state. Anything set here that changes pixels must be set there too.
-#define GL_GLEXT_PROTOTYPES 1
-#include <GL/gl.h>
-#include <GL/glext.h>
-
 #include "gl/gl_renderer.h"
+#include "gl/gl_context.h"
 #include "gl/shader_files.h"
 
 #include <algorithm>
@@ -48,44 +45,44 @@ std::string read_source(const std::string& path, int depth = 0) {
     return out;
 }
 
-GLuint compile(GLenum type, const std::string& path) {
+GLuint compile(const GlApi& gl, GLenum type, const std::string& path) {
     const std::string source = read_source(path);
-    GLuint shader = glCreateShader(type);
+    GLuint shader = gl.CreateShader(type);
     const char* text = source.c_str();
-    glShaderSource(shader, 1, &text, nullptr);
-    glCompileShader(shader);
+    gl.ShaderSource(shader, 1, &text, nullptr);
+    gl.CompileShader(shader);
     GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (!ok) {
         char log[4096] = {};
-        glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-        glDeleteShader(shader);
+        gl.GetShaderInfoLog(shader, sizeof log, nullptr, log);
+        gl.DeleteShader(shader);
         throw std::runtime_error(path + ": GLSL compile failed\n" + log);
     }
     return shader;
 }
 
-GLuint link(const std::string& vert_path, const std::string& frag_path) {
-    GLuint vs = compile(GL_VERTEX_SHADER, vert_path);
+GLuint link(const GlApi& gl, const std::string& vert_path, const std::string& frag_path) {
+    GLuint vs = compile(gl, GL_VERTEX_SHADER, vert_path);
     GLuint fs = 0;
     try {
-        fs = compile(GL_FRAGMENT_SHADER, frag_path);
+        fs = compile(gl, GL_FRAGMENT_SHADER, frag_path);
     } catch (...) {
-        glDeleteShader(vs);
+        gl.DeleteShader(vs);
         throw;
     }
-    GLuint program = glCreateProgram();
-    glAttachShader(program, vs);
-    glAttachShader(program, fs);
-    glLinkProgram(program);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
+    GLuint program = gl.CreateProgram();
+    gl.AttachShader(program, vs);
+    gl.AttachShader(program, fs);
+    gl.LinkProgram(program);
+    gl.DeleteShader(vs);
+    gl.DeleteShader(fs);
     GLint ok = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
     if (!ok) {
         char log[4096] = {};
-        glGetProgramInfoLog(program, sizeof log, nullptr, log);
-        glDeleteProgram(program);
+        gl.GetProgramInfoLog(program, sizeof log, nullptr, log);
+        gl.DeleteProgram(program);
         throw std::runtime_error(vert_path + " + " + frag_path + ": GLSL link failed\n" + log);
     }
     return program;
@@ -138,15 +135,15 @@ GLenum gl_internal_format(TextureFormat f) {
 // as RGBA floats that GL converts to the storage format (texel_formats.h).
 // An FBO drawing into `level` of the 2D texture `colour` (width x height
 // at that level), with its own 32-bit float depth buffer; left bound.
-void make_framebuffer(GLuint colour, int level, int width, int height, GLuint& fbo, GLuint& depth) {
-    glGenRenderbuffers(1, &depth);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
-    glGenFramebuffers(1, &fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, level);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+void make_framebuffer(const GlApi& gl, GLuint colour, int level, int width, int height, GLuint& fbo, GLuint& depth) {
+    gl.GenRenderbuffers(1, &depth);
+    gl.BindRenderbuffer(GL_RENDERBUFFER, depth);
+    gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
+    gl.GenFramebuffers(1, &fbo);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, level);
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw std::runtime_error("GL: incomplete framebuffer " + std::to_string(width) + "x" +
                                  std::to_string(height) + " at level " + std::to_string(level));
 }
@@ -156,9 +153,9 @@ GLenum gl_target(const Texture& tex) { return tex.cube ? GL_TEXTURE_CUBE_MAP : G
 // Level by level and face by face, from the host's texels: RGBA8 as bytes,
 // the float formats as RGBA floats that GL converts to the storage format
 // (texture/texel_formats.h), into the texture bound to gl_target(tex).
-void upload_texture(const Texture& tex) {
+void upload_texture(const GlApi& gl, const Texture& tex) {
     const GLenum target = gl_target(tex);
-    glTexStorage2D(target, tex.level_count(), gl_internal_format(tex.format), tex.width, tex.height);
+    gl.TexStorage2D(target, tex.level_count(), gl_internal_format(tex.format), tex.width, tex.height);
     for (int level = 0; level < tex.level_count(); ++level) {
         const TextureLevel* l = level ? &tex.mips[size_t(level - 1)] : nullptr;
         const int w = l ? l->width : tex.width, h = l ? l->height : tex.height;
@@ -167,33 +164,33 @@ void upload_texture(const Texture& tex) {
             const GLenum image = tex.cube ? GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face) : GL_TEXTURE_2D;
             const size_t at = size_t(face) * face_values;
             if (tex.format == TextureFormat::RGBA8)
-                glTexSubImage2D(image, level, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE,
+                gl.TexSubImage2D(image, level, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE,
                                 (l ? l->texels8.data() : tex.texels8.data()) + at);
             else
-                glTexSubImage2D(image, level, 0, 0, w, h, GL_RGBA, GL_FLOAT,
+                gl.TexSubImage2D(image, level, 0, 0, w, h, GL_RGBA, GL_FLOAT,
                                 (l ? l->texels32.data() : tex.texels32.data()) + at);
         }
     }
-    glTexParameteri(target, GL_TEXTURE_MIN_FILTER, gl_min_filter(tex.min_filter, tex.mip_filter));
-    glTexParameteri(target, GL_TEXTURE_MAG_FILTER, gl_mag_filter(tex.mag_filter));
-    glTexParameteri(target, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap_s));
-    glTexParameteri(target, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap_t));
-    glTexParameterf(target, GL_TEXTURE_LOD_BIAS, tex.lod_bias);
-    glTexParameterf(target, GL_TEXTURE_MIN_LOD, tex.min_lod);
-    glTexParameterf(target, GL_TEXTURE_MAX_LOD, tex.max_lod);
+    gl.TexParameteri(target, GL_TEXTURE_MIN_FILTER, gl_min_filter(tex.min_filter, tex.mip_filter));
+    gl.TexParameteri(target, GL_TEXTURE_MAG_FILTER, gl_mag_filter(tex.mag_filter));
+    gl.TexParameteri(target, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap_s));
+    gl.TexParameteri(target, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap_t));
+    gl.TexParameterf(target, GL_TEXTURE_LOD_BIAS, tex.lod_bias);
+    gl.TexParameterf(target, GL_TEXTURE_MIN_LOD, tex.min_lod);
+    gl.TexParameterf(target, GL_TEXTURE_MAX_LOD, tex.max_lod);
 }
 
-void set_uniform(GLuint program, const Uniform& u) {
-    const GLint loc = glGetUniformLocation(program, u.name.c_str());
+void set_uniform(const GlApi& gl, GLuint program, const Uniform& u) {
+    const GLint loc = gl.GetUniformLocation(program, u.name.c_str());
     if (loc < 0) return;  // not used by this program (or optimised away)
     const float* v = u.value.data();
     switch (u.type) {
-        case UniformType::Float: glUniform1f(loc, v[0]); break;
-        case UniformType::Vec2: glUniform2f(loc, v[0], v[1]); break;
-        case UniformType::Vec3: glUniform3f(loc, v[0], v[1], v[2]); break;
-        case UniformType::Vec4: glUniform4f(loc, v[0], v[1], v[2], v[3]); break;
-        case UniformType::Int: glUniform1i(loc, int(v[0])); break;
-        case UniformType::Mat4: glUniformMatrix4fv(loc, 1, GL_FALSE, v); break;
+        case UniformType::Float: gl.Uniform1f(loc, v[0]); break;
+        case UniformType::Vec2: gl.Uniform2f(loc, v[0], v[1]); break;
+        case UniformType::Vec3: gl.Uniform3f(loc, v[0], v[1], v[2]); break;
+        case UniformType::Vec4: gl.Uniform4f(loc, v[0], v[1], v[2], v[3]); break;
+        case UniformType::Int: gl.Uniform1i(loc, int(v[0])); break;
+        case UniformType::Mat4: gl.UniformMatrix4fv(loc, 1, GL_FALSE, v); break;
     }
 }
 
@@ -239,63 +236,66 @@ struct GlRenderer::State {
     std::vector<Target> passes;
     std::map<std::string, Named> named;
 
-    void release_passes() {
+    void release_passes(const GlApi& gl) {
         for (Target& t : passes) {
             for (Draw& d : t.draws) {
-                glDeleteVertexArrays(1, &d.vao);
-                glDeleteBuffers(1, &d.vbo);
-                glDeleteBuffers(1, &d.ebo);
-                glDeleteTextures(GLsizei(d.owned_textures.size()), d.owned_textures.data());
+                gl.DeleteVertexArrays(1, &d.vao);
+                gl.DeleteBuffers(1, &d.vbo);
+                gl.DeleteBuffers(1, &d.ebo);
+                gl.DeleteTextures(GLsizei(d.owned_textures.size()), d.owned_textures.data());
                 for (GLuint sampler : d.samplers)
-                    if (sampler) glDeleteSamplers(1, &sampler);
+                    if (sampler) gl.DeleteSamplers(1, &sampler);
             }
             if (t.owned) {
-                glDeleteFramebuffers(1, &t.fbo);
-                glDeleteTextures(1, &t.colour);
-                glDeleteRenderbuffers(1, &t.depth);
+                gl.DeleteFramebuffers(1, &t.fbo);
+                gl.DeleteTextures(1, &t.colour);
+                gl.DeleteRenderbuffers(1, &t.depth);
             }
         }
         passes.clear();
         for (auto& [name, n] : named) {
-            glDeleteFramebuffers(GLsizei(n.fbos.size()), n.fbos.data());
-            glDeleteRenderbuffers(GLsizei(n.depths.size()), n.depths.data());
-            glDeleteTextures(1, &n.texture);
+            gl.DeleteFramebuffers(GLsizei(n.fbos.size()), n.fbos.data());
+            gl.DeleteRenderbuffers(GLsizei(n.depths.size()), n.depths.data());
+            gl.DeleteTextures(1, &n.texture);
         }
         named.clear();
     }
 };
 
-GlRenderer::GlRenderer(const std::vector<std::string>& glsl_roots)
-    : shaders_(std::make_unique<ShaderFiles>(glsl_roots)), context_(make_osmesa_context()), state_(new State) {}
+GlRenderer::GlRenderer(const std::vector<std::string>& glsl_roots, GlPlatform platform)
+    : shaders_(std::make_unique<ShaderFiles>(glsl_roots)), context_(make_gl_context(platform)), state_(new State) {}
 
 GlRenderer::~GlRenderer() {
     context_->make_current();
-    state_->release_passes();
-    for (auto& [key, program] : state_->programs) glDeleteProgram(program);
+    const GlApi& gl = context_->gl();
+    state_->release_passes(gl);
+    for (auto& [key, program] : state_->programs) gl.DeleteProgram(program);
 }
 
 std::string GlRenderer::renderer() const { return context_->renderer(); }
 std::string GlRenderer::version() const { return context_->version(); }
+GlPlatform GlRenderer::platform() const { return context_->platform(); }
 
 void GlRenderer::prepare(const Frame& frame) {
     context_->make_current();
-    state_->release_passes();
+    const GlApi& gl = context_->gl();
+    state_->release_passes(gl);
     // Cube maps filter across their faces, as real renderers set them.
-    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    gl.Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     for (const RenderTarget& rt : frame.targets) {
         State::Named n;
         n.desc = rt;
-        glGenTextures(1, &n.texture);
-        glBindTexture(GL_TEXTURE_2D, n.texture);
-        glTexStorage2D(GL_TEXTURE_2D, rt.levels, rt.format == TargetFormat::RGBA16F ? GL_RGBA16F : GL_RGBA32F,
+        gl.GenTextures(1, &n.texture);
+        gl.BindTexture(GL_TEXTURE_2D, n.texture);
+        gl.TexStorage2D(GL_TEXTURE_2D, rt.levels, rt.format == TargetFormat::RGBA16F ? GL_RGBA16F : GL_RGBA32F,
                        rt.width, rt.height);
         for (int level = 0; level < rt.levels; ++level) {
             GLuint fbo = 0, depth = 0;
-            make_framebuffer(n.texture, level, std::max(1, rt.width >> level), std::max(1, rt.height >> level),
+            make_framebuffer(gl, n.texture, level, std::max(1, rt.width >> level), std::max(1, rt.height >> level),
                              fbo, depth);
             // Start from zero, as the CPU side does.
-            glClearColor(0, 0, 0, 0);
-            glClear(GL_COLOR_BUFFER_BIT);
+            gl.ClearColor(0, 0, 0, 0);
+            gl.Clear(GL_COLOR_BUFFER_BIT);
             n.fbos.push_back(fbo);
             n.depths.push_back(depth);
         }
@@ -318,10 +318,10 @@ void GlRenderer::prepare(const Frame& frame) {
             t.fbo = n.fbos[size_t(pass.level)];
             t.colour = n.texture;
         } else {
-            glGenTextures(1, &t.colour);
-            glBindTexture(GL_TEXTURE_2D, t.colour);
-            glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, t.width, t.height);
-            make_framebuffer(t.colour, 0, t.width, t.height, t.fbo, t.depth);
+            gl.GenTextures(1, &t.colour);
+            gl.BindTexture(GL_TEXTURE_2D, t.colour);
+            gl.TexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, t.width, t.height);
+            make_framebuffer(gl, t.colour, 0, t.width, t.height, t.fbo, t.depth);
         }
 
         for (const DrawCall& dc : pass.draws) {
@@ -329,7 +329,7 @@ void GlRenderer::prepare(const Frame& frame) {
             auto it = state_->programs.find(key);
             if (it == state_->programs.end())
                 it = state_->programs
-                         .emplace(key, link(shaders_->path(dc.vertex, ".vert"),
+                         .emplace(key, link(gl, shaders_->path(dc.vertex, ".vert"),
                                             shaders_->path(dc.fragment, ".frag")))
                          .first;
             State::Draw d;
@@ -340,23 +340,23 @@ void GlRenderer::prepare(const Frame& frame) {
                 d.vertices = dc.vertices;
             }
             d.index_count = GLsizei(dc.indices.size());
-            glGenVertexArrays(1, &d.vao);
-            glBindVertexArray(d.vao);
-            glGenBuffers(1, &d.vbo);
-            glBindBuffer(GL_ARRAY_BUFFER, d.vbo);
-            glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(dc.vertices.data.size() * sizeof(glm::vec4)),
+            gl.GenVertexArrays(1, &d.vao);
+            gl.BindVertexArray(d.vao);
+            gl.GenBuffers(1, &d.vbo);
+            gl.BindBuffer(GL_ARRAY_BUFFER, d.vbo);
+            gl.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(dc.vertices.data.size() * sizeof(glm::vec4)),
                          dc.vertices.data.data(), GL_STATIC_DRAW);
             const GLsizei stride = GLsizei(dc.vertices.attribute_count * sizeof(glm::vec4));
             for (int a = 0; a < dc.vertices.attribute_count; ++a) {
-                glEnableVertexAttribArray(GLuint(a));
-                glVertexAttribPointer(GLuint(a), 4, GL_FLOAT, GL_FALSE, stride,
+                gl.EnableVertexAttribArray(GLuint(a));
+                gl.VertexAttribPointer(GLuint(a), 4, GL_FLOAT, GL_FALSE, stride,
                                       reinterpret_cast<const void*>(size_t(a) * sizeof(glm::vec4)));
             }
-            glGenBuffers(1, &d.ebo);
-            glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, d.ebo);
-            glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(dc.indices.size() * sizeof(uint32_t)),
+            gl.GenBuffers(1, &d.ebo);
+            gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, d.ebo);
+            gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(dc.indices.size() * sizeof(uint32_t)),
                          dc.indices.data(), GL_STATIC_DRAW);
-            glBindVertexArray(0);
+            gl.BindVertexArray(0);
 
             d.uniforms = dc.uniforms;
             for (size_t unit = 0; unit < dc.textures.size(); ++unit) {
@@ -365,19 +365,19 @@ void GlRenderer::prepare(const Frame& frame) {
                 if (!tex.target.empty()) {
                     // A render target: its texture, filtered by a sampler object.
                     name = state_->named.at(tex.target).texture;
-                    glGenSamplers(1, &sampler);
-                    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, gl_min_filter(tex.min_filter, tex.mip_filter));
-                    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, gl_mag_filter(tex.mag_filter));
-                    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap_s));
-                    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap_t));
-                    glSamplerParameterf(sampler, GL_TEXTURE_LOD_BIAS, tex.lod_bias);
-                    glSamplerParameterf(sampler, GL_TEXTURE_MIN_LOD, tex.min_lod);
-                    glSamplerParameterf(sampler, GL_TEXTURE_MAX_LOD, tex.max_lod);
+                    gl.GenSamplers(1, &sampler);
+                    gl.SamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, gl_min_filter(tex.min_filter, tex.mip_filter));
+                    gl.SamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, gl_mag_filter(tex.mag_filter));
+                    gl.SamplerParameteri(sampler, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap_s));
+                    gl.SamplerParameteri(sampler, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap_t));
+                    gl.SamplerParameterf(sampler, GL_TEXTURE_LOD_BIAS, tex.lod_bias);
+                    gl.SamplerParameterf(sampler, GL_TEXTURE_MIN_LOD, tex.min_lod);
+                    gl.SamplerParameterf(sampler, GL_TEXTURE_MAX_LOD, tex.max_lod);
                 } else {
-                    glGenTextures(1, &name);
-                    glBindTexture(gl_target(tex), name);
-                    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-                    upload_texture(tex);
+                    gl.GenTextures(1, &name);
+                    gl.BindTexture(gl_target(tex), name);
+                    gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+                    upload_texture(gl, tex);
                     d.owned_textures.push_back(name);
                 }
                 d.sampler_names.push_back(tex.sampler);
@@ -389,44 +389,45 @@ void GlRenderer::prepare(const Frame& frame) {
         }
         state_->passes.push_back(std::move(t));
     }
-    if (GLenum err = glGetError(); err != GL_NO_ERROR)
+    if (GLenum err = gl.GetError(); err != GL_NO_ERROR)
         throw std::runtime_error("GL error " + std::to_string(err) + " while preparing the frame");
 }
 
 void GlRenderer::execute() {
     context_->make_current();
-    glDisable(GL_DITHER);
-    glDisable(GL_CULL_FACE);
+    const GlApi& gl = context_->gl();
+    gl.Disable(GL_DITHER);
+    gl.Disable(GL_CULL_FACE);
     for (State::Target& t : state_->passes) {
-        glBindFramebuffer(GL_FRAMEBUFFER, t.fbo);
-        glViewport(t.viewport[0], t.viewport[1], t.viewport[2], t.viewport[3]);
-        glDepthMask(GL_TRUE);
-        glClearColor(t.clear_colour.r, t.clear_colour.g, t.clear_colour.b, t.clear_colour.a);
-        glClearDepth(t.clear_depth);
-        glClear(t.clear ? GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT : GL_DEPTH_BUFFER_BIT);
+        gl.BindFramebuffer(GL_FRAMEBUFFER, t.fbo);
+        gl.Viewport(t.viewport[0], t.viewport[1], t.viewport[2], t.viewport[3]);
+        gl.DepthMask(GL_TRUE);
+        gl.ClearColor(t.clear_colour.r, t.clear_colour.g, t.clear_colour.b, t.clear_colour.a);
+        gl.ClearDepth(t.clear_depth);
+        gl.Clear(t.clear ? GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT : GL_DEPTH_BUFFER_BIT);
         for (State::Draw& d : t.draws) {
             if (d.state.depth_test) {
-                glEnable(GL_DEPTH_TEST);
-                glDepthFunc(GL_LESS);
+                gl.Enable(GL_DEPTH_TEST);
+                gl.DepthFunc(GL_LESS);
             } else {
-                glDisable(GL_DEPTH_TEST);
+                gl.Disable(GL_DEPTH_TEST);
             }
-            glDepthMask(d.state.depth_write ? GL_TRUE : GL_FALSE);
+            gl.DepthMask(d.state.depth_write ? GL_TRUE : GL_FALSE);
             switch (d.state.blend) {
-                case BlendMode::None: glDisable(GL_BLEND); break;
+                case BlendMode::None: gl.Disable(GL_BLEND); break;
                 case BlendMode::OneSrcAlpha:
-                    glEnable(GL_BLEND);
-                    glBlendFunc(GL_ONE, GL_SRC_ALPHA);
+                    gl.Enable(GL_BLEND);
+                    gl.BlendFunc(GL_ONE, GL_SRC_ALPHA);
                     break;
                 case BlendMode::SrcAlphaOneMinusSrcAlpha:
-                    glEnable(GL_BLEND);
-                    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+                    gl.Enable(GL_BLEND);
+                    gl.BlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
                     break;
                 case BlendMode::Factors: {
                     const BlendFactors& f = d.state.factors;
-                    glEnable(GL_BLEND);
-                    glBlendEquation(GL_FUNC_ADD);
-                    glBlendFuncSeparate(gl_factor(f.src_rgb), gl_factor(f.dst_rgb), gl_factor(f.src_alpha),
+                    gl.Enable(GL_BLEND);
+                    gl.BlendEquation(GL_FUNC_ADD);
+                    gl.BlendFuncSeparate(gl_factor(f.src_rgb), gl_factor(f.dst_rgb), gl_factor(f.src_alpha),
                                         gl_factor(f.dst_alpha));
                     break;
                 }
@@ -434,35 +435,35 @@ void GlRenderer::execute() {
             if (d.host_stage) {
                 // The host's per-frame work and its upload belong to the frame.
                 d.host_stage->run(d.vertices);
-                glBindBuffer(GL_ARRAY_BUFFER, d.vbo);
-                glBufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(d.vertices.data.size() * sizeof(glm::vec4)),
+                gl.BindBuffer(GL_ARRAY_BUFFER, d.vbo);
+                gl.BufferSubData(GL_ARRAY_BUFFER, 0, GLsizeiptr(d.vertices.data.size() * sizeof(glm::vec4)),
                                 d.vertices.data.data());
             }
-            glUseProgram(d.program);
-            for (const Uniform& u : d.uniforms) set_uniform(d.program, u);
+            gl.UseProgram(d.program);
+            for (const Uniform& u : d.uniforms) set_uniform(gl, d.program, u);
             for (size_t unit = 0; unit < d.textures.size(); ++unit) {
-                const GLint loc = glGetUniformLocation(d.program, d.sampler_names[unit].c_str());
-                if (loc >= 0) glUniform1i(loc, GLint(unit));
-                glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-                glBindTexture(d.texture_targets[unit], d.textures[unit]);
-                glBindSampler(GLuint(unit), d.samplers[unit]);
+                const GLint loc = gl.GetUniformLocation(d.program, d.sampler_names[unit].c_str());
+                if (loc >= 0) gl.Uniform1i(loc, GLint(unit));
+                gl.ActiveTexture(GLenum(GL_TEXTURE0 + unit));
+                gl.BindTexture(d.texture_targets[unit], d.textures[unit]);
+                gl.BindSampler(GLuint(unit), d.samplers[unit]);
             }
-            glBindVertexArray(d.vao);
-            glDrawElements(GL_TRIANGLES, d.index_count, GL_UNSIGNED_INT, nullptr);
+            gl.BindVertexArray(d.vao);
+            gl.DrawElements(GL_TRIANGLES, d.index_count, GL_UNSIGNED_INT, nullptr);
         }
     }
-    glFinish();
-    if (GLenum err = glGetError(); err != GL_NO_ERROR)
+    gl.Finish();
+    if (GLenum err = gl.GetError(); err != GL_NO_ERROR)
         throw std::runtime_error("GL error " + std::to_string(err) + " while drawing");
 }
 
 namespace {
 
-Image read_fbo(GLuint fbo, int width, int height) {
+Image read_fbo(const GlApi& gl, GLuint fbo, int width, int height) {
     Image bottom_up(width, height);
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, bottom_up.rgba.data());
+    gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, bottom_up.rgba.data());
     Image image(width, height);
     for (int y = 0; y < height; ++y)
         std::copy_n(bottom_up.pixel(0, height - 1 - y), size_t(width) * 4, image.pixel(0, y));
@@ -473,18 +474,20 @@ Image read_fbo(GLuint fbo, int width, int height) {
 
 Image GlRenderer::read_back() {
     context_->make_current();
+    const GlApi& gl = context_->gl();
     for (auto t = state_->passes.rbegin(); t != state_->passes.rend(); ++t)
-        if (t->owned) return read_fbo(t->fbo, t->width, t->height);
+        if (t->owned) return read_fbo(gl, t->fbo, t->width, t->height);
     throw std::runtime_error("GL: nothing rendered");
 }
 
 Image GlRenderer::read_back(const std::string& target, int level) {
     context_->make_current();
+    const GlApi& gl = context_->gl();
     const auto it = state_->named.find(target);
     if (it == state_->named.end() || level < 0 || level >= it->second.desc.levels)
         throw std::runtime_error("GL: no render target " + target + " level " + std::to_string(level));
     const RenderTarget& rt = it->second.desc;
-    return read_fbo(it->second.fbos[size_t(level)], std::max(1, rt.width >> level), std::max(1, rt.height >> level));
+    return read_fbo(gl, it->second.fbos[size_t(level)], std::max(1, rt.width >> level), std::max(1, rt.height >> level));
 }
 
 }  // namespace st

@@ -7,18 +7,19 @@
 #include <vector>
 
 #include "frame/frame.h"
-#include "gl/gl_context.h"
+#include "gl/gl_platform.h"
 #include "image/image.h"
 
 namespace st {
 
+class GlContext;
 class ShaderFiles;
 
 class GlRenderer {
 public:
     // `glsl_roots` hold <technique>/<name>.vert|.frag (gl/shader_files.h).
-    // Creates the context.
-    explicit GlRenderer(const std::vector<std::string>& glsl_roots);
+    // Creates the context on `platform` (gl_context.h).
+    explicit GlRenderer(const std::vector<std::string>& glsl_roots, GlPlatform platform = GlPlatform::Auto);
     ~GlRenderer();
 
     // Compiles programs, uploads geometry and textures, creates targets.
@@ -40,6 +41,7 @@ public:
 
     std::string renderer() const;
     std::string version() const;
+    GlPlatform platform() const;  // the one the context got: OSMesa or EGL
 
 private:
     struct State;

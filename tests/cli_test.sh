@@ -57,6 +57,45 @@ PY
     "$bin" golden check
     ;;
 
+  gl_platforms)
+    # The GL reference through OSMesa and through EGL (gl/gl_context.h):
+    # every built-in scene's GL image and every named output hash the same on
+    # both, and each run says which platform drew it. Both platforms are
+    # installed by scripts/install-deps.sh, so a missing one is a failure.
+    for p in osmesa egl; do
+      SHADERTWIN_GL=$p "$bin" --version >"$work/version.$p" || fail "GL platform $p unavailable"
+      grep -qx "gl_platform $p" "$work/version.$p" || fail "--version under SHADERTWIN_GL=$p: $(cat "$work/version.$p")"
+      "$bin" render $(all_scenes) --backend gl --gl $p --out "$work/$p" >"$work/$p.jsonl"
+    done
+    diff <(grep ^gl_renderer "$work/version.osmesa") <(grep ^gl_renderer "$work/version.egl") ||
+      fail "the platforms report different renderers"
+    python3 - "$work/osmesa.jsonl" "$work/egl.jsonl" <<'PY' || fail "OSMesa and EGL images differ"
+import json, sys
+runs = [[json.loads(l) for l in open(f)] for f in sys.argv[1:]]
+assert [j["gl_platform"] for j in runs[0]] == ["osmesa"] * len(runs[0])
+assert [j["gl_platform"] for j in runs[1]] == ["egl"] * len(runs[1])
+def hashes(run):
+    return [(j["scene"], j["hash"], [(o["name"], o["hash"]) for o in j["outputs"]]) for j in run]
+a, b = hashes(runs[0]), hashes(runs[1])
+assert len(a) == len(b) and len(a) > 0
+bad = [x[0] for x, y in zip(a, b) if x != y]
+assert not bad, "differ: " + " ".join(bad)
+print("ok   %d scenes and %d named outputs hash the same on OSMesa and EGL"
+      % (len(a), sum(len(x[2]) for x in a)))
+PY
+    # Precedence: --gl over SHADERTWIN_GL over auto; auto takes OSMesa here.
+    SHADERTWIN_GL=egl "$bin" render thin-slab-fragment-backlit --backend gl --gl osmesa --out "$work/p" |
+      grep -q '"gl_platform":"osmesa"' || fail "--gl does not override SHADERTWIN_GL"
+    "$bin" render thin-slab-fragment-backlit --backend gl --out "$work/p" | grep -q '"gl_platform":"osmesa"' ||
+      fail "auto did not take OSMesa on a machine that has it"
+    # The platform is recorded in the GL image's metadata.
+    oiiotool --info -v "$work/egl/thin-slab-fragment-backlit.gl.exr" | grep -q 'gl_platform: "egl"' ||
+      fail "the EGL image does not say which platform drew it"
+    expect_bad_input "--gl with an unknown platform" "$bin" render thin-slab-fragment-backlit --backend gl --gl glx
+    SHADERTWIN_GL=vulkan expect_bad_input "SHADERTWIN_GL with an unknown platform" \
+      "$bin" render thin-slab-fragment-backlit --backend gl
+    ;;
+
   threads)
     # The same hash for 1, 2, 3 and 8 threads and across repeated runs.
     for t in 1 2 3 8 2; do

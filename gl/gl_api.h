@@ -1,0 +1,54 @@
+// gl_api.h: the GL entry points the reference uses, as a table of function
+// pointers that the context fills in.
+//
+// We never call GL through linked symbols. OSMesa exports its own gl*
+// functions and glvnd's libGL/libOpenGL export dispatch stubs of the same
+// names; whichever the dynamic linker meets first takes every call (see
+// ../shared/notes/llvmpipe.md), so with two GL platforms in one tool a linked
+// glCreateShader may land in the wrong one. Each context instead asks its own
+// platform for each function (OSMesaGetProcAddress, eglGetProcAddress) and
+// the renderer calls through the table: gl.CreateShader(...).
+#pragma once
+
+#define GL_GLEXT_PROTOTYPES 1
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <functional>
+
+namespace st {
+
+// Every GL function the reference calls, without its "gl" prefix. Add a
+// function here before using it; load_gl_api refuses a platform that lacks
+// one.
+#define ST_GL_FUNCTIONS(X)                                                                                  \
+    X(ActiveTexture) X(AttachShader) X(BindBuffer) X(BindFramebuffer) X(BindRenderbuffer) X(BindSampler)     \
+    X(BindTexture) X(BindVertexArray) X(BlendEquation) X(BlendFunc) X(BlendFuncSeparate) X(BufferData)      \
+    X(BufferSubData) X(CheckFramebufferStatus) X(Clear) X(ClearColor) X(ClearDepth) X(CompileShader)        \
+    X(CreateProgram) X(CreateShader) X(DeleteBuffers) X(DeleteFramebuffers) X(DeleteProgram)                \
+    X(DeleteRenderbuffers) X(DeleteSamplers) X(DeleteShader) X(DeleteTextures) X(DeleteVertexArrays)        \
+    X(DepthFunc) X(DepthMask) X(Disable) X(DrawArrays) X(DrawElements) X(Enable) X(EnableVertexAttribArray) \
+    X(Finish) X(FramebufferRenderbuffer) X(FramebufferTexture2D) X(GenBuffers) X(GenFramebuffers)          \
+    X(GenRenderbuffers) X(GenSamplers) X(GenTextures) X(GenVertexArrays) X(GetError) X(GetProgramInfoLog)  \
+    X(GetProgramiv) X(GetShaderInfoLog) X(GetShaderiv) X(GetString) X(GetUniformLocation) X(LinkProgram)    \
+    X(PixelStorei) X(ReadPixels) X(RenderbufferStorage) X(SamplerParameterf) X(SamplerParameteri)         \
+    X(ShaderSource) X(TexParameterf) X(TexParameteri) X(TexStorage2D) X(TexSubImage2D) X(Uniform1f)         \
+    X(Uniform1i) X(Uniform2f) X(Uniform3f) X(Uniform4f) X(UniformMatrix4fv) X(UseProgram)                   \
+    X(VertexAttribPointer) X(Viewport)
+
+// The prototypes above are only read for their types (decltype); nothing
+// links against them.
+struct GlApi {
+#define ST_GL_MEMBER(name) decltype(&::gl##name) name = nullptr;
+    ST_GL_FUNCTIONS(ST_GL_MEMBER)
+#undef ST_GL_MEMBER
+};
+
+// A platform's lookup: the entry point named, or null.
+using GlProcLookup = std::function<void (*(const char* name))()>;
+
+// Fills every entry through `lookup`. Throws std::runtime_error naming the
+// platform and the first function it lacks.
+GlApi load_gl_api(const char* platform, const GlProcLookup& lookup);
+
+}  // namespace st
