@@ -4,9 +4,12 @@
 # installed package). The per-scene tests (label `scene`: one process per
 # scene, for `ctest -L <technique>` and sharding) repeat what
 # cli.compare_builtin and cli.golden check in one process each, and would
-# add minutes here; cli.ctest_labels runs one technique's of them.
+# add minutes here; cli.ctest_labels runs one technique's of them. Label
+# `long` (cli.lane_widths: two more builds, four minutes) runs in CI's
+# sanitizer check, scripts/check-asan.sh, which runs every test but the
+# per-scene ones; `ctest --test-dir build -L long` runs it here.
 set -euo pipefail
 cd "$(dirname "$0")"
 ./scripts/install-deps.sh
 ./scripts/build.sh
-ctest --test-dir build --output-on-failure -j 2 -LE "^scene$" "$@"
+ctest --test-dir build --output-on-failure -j 2 -LE "^(scene|long)$" "$@"

@@ -1,6 +1,7 @@
 // backends.cpp: see backends.h.
 #include "app/backends.h"
 
+#include "app/output_provenance.h"
 #include "app/provenance.h"
 #include "gl/gl_renderer.h"
 #include "kernels/registry.h"
@@ -20,7 +21,10 @@ CpuRenderer& Backends::cpu() {
 }
 
 GlRenderer& Backends::gl() {
-    if (!gl_) gl_ = std::make_unique<GlRenderer>(glsl_roots_, gl_platform_);
+    if (!gl_) {
+        gl_ = std::make_unique<GlRenderer>(glsl_roots_, gl_platform_);
+        record_gl_provenance(gl_->renderer(), gl_->version(), gl_platform_name(gl_->platform()));
+    }
     return *gl_;
 }
 

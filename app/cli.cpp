@@ -12,6 +12,7 @@
 
 #include "app/commands.h"
 #include "app/error_line.h"
+#include "app/output_provenance.h"
 #include "app/memory_budget.h"
 #include "app/profile_quality.h"
 #include "scene/input_error.h"
@@ -230,6 +231,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
 
     try {
         if (setup) setup();
+        st::record_build_provenance();
         if (!gl_given) common.gl_platform = st::gl_platform_from_environment();
         // A scene's `quality: auto` is resolved by rendering candidates (app/profile_quality.h).
         st::install_quality_resolver(common.threads, common.gl_platform);

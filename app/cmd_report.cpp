@@ -19,6 +19,7 @@
 #include "app/comparison.h"
 #include "app/provenance.h"
 #include "app/report_page.h"
+#include "app/report_techniques.h"
 #include "app/short_number.h"
 #include "image/image_io.h"
 #include "scene/scene.h"
@@ -95,7 +96,7 @@ int cmd_report(const std::vector<std::string>& patterns, const std::string& out_
     for (const Scene& s : scenes) {
         progress.step(s.name);
         const auto start = std::chrono::steady_clock::now();
-        ReportEntry e{s.name, s.kind, compare_scene(s, backends, out_dir), std::nullopt};
+        ReportEntry e{s.name, s.kind, compare_scene(s, backends, out_dir), std::nullopt, s.paper};
         add_junit_cases(junit, s, e.comparison, out_dir,
                         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         if (frames > 0) {
@@ -118,7 +119,11 @@ int cmd_report(const std::vector<std::string>& patterns, const std::string& out_
                                   (frames > 0 ? "; " + std::to_string(frames) + " timed frames per backend, interleaved"
                                               : std::string()),
                               out_dir, frames};
-    write_text_file(out_dir + "/index.html", report_page(header, entries));
+    std::vector<std::string> techniques;
+    for (const ReportEntry& e : entries)
+        if (std::find(techniques.begin(), techniques.end(), e.kind) == techniques.end()) techniques.push_back(e.kind);
+    const std::vector<SweepChart> charts = copy_sweep_charts(techniques, out_dir);
+    write_text_file(out_dir + "/index.html", report_page(header, entries, technique_section(entries, charts)));
     std::cout << markdown(results, renderer) << cost;
     if (!junit_path.empty()) write_junit(junit_path, junit);
     const bool all_pass = std::all_of(results.begin(), results.end(), [](auto& c) { return c.pass(); });

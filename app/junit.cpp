@@ -3,6 +3,8 @@
 // testcase (classname, name, time) > failure (message, body).
 #include "app/junit.h"
 
+#include "image/file_provenance.h"
+
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -44,6 +46,14 @@ std::string JunitReport::xml() const {
     x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
       << "<testsuites name=\"" << markup_text(suite_) << "\"" << counts << ">\n"
       << "  <testsuite name=\"" << markup_text(suite_) << "\"" << counts << ">\n";
+    // What made the results, where CI reporters show a suite's properties.
+    if (const auto& made = file_provenance().attributes; !made.empty()) {
+        x << "    <properties>\n";
+        for (const auto& [name, value] : made)
+            x << "      <property name=\"shadertwin." << markup_text(name) << "\" value=\"" << markup_text(value)
+              << "\"/>\n";
+        x << "    </properties>\n";
+    }
     for (const JunitCase& c : cases_) {
         x << "    <testcase classname=\"" << markup_text(c.classname) << "\" name=\"" << markup_text(c.name)
           << "\" time=\"" << seconds(c.seconds) << "\"";

@@ -41,6 +41,7 @@ img{image-rendering:pixelated;border:1px solid #888;display:block}
 .viewer img{border:0} .viewer .top{position:absolute;left:0;top:0}
 .controls{font-size:.85em;margin:.3em 0} pre{background:#f6f6f6;padding:.4em;overflow-x:auto}
 .legend{font-size:.85em;color:#444}
+figure.chart{max-width:480px} figure.chart img{image-rendering:auto}
 )css";
 
 // The wipe shows the CPU image left of the slider and llvmpipe's right of
@@ -112,7 +113,8 @@ std::string fps_ratio(const ReportEntry& e) {
 
 }  // namespace
 
-std::string report_page(const ReportHeader& header, const std::vector<ReportEntry>& entries) {
+std::string report_page(const ReportHeader& header, const std::vector<ReportEntry>& entries,
+                        const std::string& techniques) {
     const long failed = std::count_if(entries.begin(), entries.end(), [](auto& e) { return !e.comparison.pass(); });
     std::ostringstream h;
     h << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>shadertwin report</title><style>"
@@ -137,7 +139,8 @@ std::string report_page(const ReportHeader& header, const std::vector<ReportEntr
     h << "</table>\n<p class=\"legend\">Heat maps: black = bit-identical floats, dark blue = floats differ but 8-bit "
          "equal, green = 1 LSB, yellow = 2-3 LSB, red = 4+ LSB, white = non-finite. Coverage maps: where the number of "
          "fragments per pixel differs. Condition maps: white where the scene's failure conditions allow a difference."
-         "</p>\n";
+         "</p>\n"
+      << techniques << "<h2 id=\"scenes\">Scenes</h2>\n";
 
     // Each scene's detail, folded; a failing one open.
     for (const ReportEntry& e : entries) {

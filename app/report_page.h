@@ -20,6 +20,7 @@ struct ReportEntry {
     std::string scene, kind;
     SceneComparison comparison;
     std::optional<BenchResult> cost;  // when report timed frames
+    std::optional<PaperTiming> paper;  // the paper's frame rate for this scene, if it gave one
 };
 
 struct ReportHeader {
@@ -29,7 +30,9 @@ struct ReportHeader {
     int frames = 0;         // timed frames per backend, 0: none
 };
 
-// `entries` in the order shown: failures first.
-std::string report_page(const ReportHeader& header, const std::vector<ReportEntry>& entries);
+// `entries` in the order shown: failures first. `techniques`: the
+// per-technique section (report_techniques.h), placed after the summary.
+std::string report_page(const ReportHeader& header, const std::vector<ReportEntry>& entries,
+                        const std::string& techniques = "");
 
 }  // namespace st

@@ -2,12 +2,13 @@
 #include "app/tool_data.h"
 
 #include <filesystem>
+#include <map>
 #include <stdexcept>
 
 #include "scene/scene_sources.h"
 
-#if !defined(SHADERTWIN_GLSL_DIR) || !defined(SHADERTWIN_MATERIALS_DIR)
-#error "SHADERTWIN_GLSL_DIR and SHADERTWIN_MATERIALS_DIR must name the source tree's glsl/ and materials/"
+#if !defined(SHADERTWIN_GLSL_DIR) || !defined(SHADERTWIN_MATERIALS_DIR) || !defined(SHADERTWIN_DOCS_DIR)
+#error "SHADERTWIN_GLSL_DIR, SHADERTWIN_MATERIALS_DIR and SHADERTWIN_DOCS_DIR must name the source tree's folders"
 #endif
 
 namespace st {
@@ -19,6 +20,10 @@ namespace {
 struct ToolData {
     std::vector<std::string> glsl_roots = {SHADERTWIN_GLSL_DIR};
     std::string materials = SHADERTWIN_MATERIALS_DIR;
+    // The sweeps' last runs kept with the tool (docs/ here; sweeps/<kind>/
+    // in an install), whose charts the report shows.
+    std::map<std::string, std::string> sweep_charts = {{"relief", SHADERTWIN_DOCS_DIR "/relief-sweep"},
+                                                       {"profile", SHADERTWIN_DOCS_DIR "/profile-sweep"}};
     std::string tool_name = "shadertwin";
 };
 
@@ -39,6 +44,7 @@ void set_builtin_data_dir(const std::string& share_dir) {
     }
     data().glsl_roots.front() = (share / "glsl").string();
     data().materials = (share / "materials").string();
+    for (auto& [kind, dir] : data().sweep_charts) dir = (share / "sweeps" / kind).string();
     scene_sources().set_builtin((share / "scenes").string(), (share / "golden" / "hashes.json").string());
 }
 
@@ -54,6 +60,7 @@ void add_glsl_roots(const std::vector<std::string>& roots) {
 
 std::vector<std::string> glsl_roots() { return data().glsl_roots; }
 std::string materials_dir() { return data().materials; }
+std::map<std::string, std::string> sweep_chart_dirs() { return data().sweep_charts; }
 
 void set_tool_name(const std::string& name) {
     if (!name.empty()) data().tool_name = name;

@@ -5,6 +5,7 @@
 // techniques' GLSL files (sdk/technique.h).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ void add_glsl_roots(const std::vector<std::string>& roots);
 // The built-in glsl/ folder first, then every user technique's files.
 std::vector<std::string> glsl_roots();
 std::string materials_dir();
+// Per technique (scene kind), the folder holding its sweep's last kept run
+// (`sweep relief --out DIR`: SVG charts, CSV, Markdown), which `report`
+// shows: relief and profile.
+std::map<std::string, std::string> sweep_chart_dirs();
 
 // The tool's name as its users call it (`shadertwin`, or a user tool's), for
 // the commands that reports and JUnit files quote.

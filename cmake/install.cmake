@@ -30,6 +30,9 @@ set(_share ${CMAKE_INSTALL_DATADIR}/shadertwin)
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/glsl/ DESTINATION ${_share}/glsl)
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/scenes/ DESTINATION ${_share}/scenes)
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/materials/ DESTINATION ${_share}/materials)
+# The sweeps' last kept runs, whose charts `report` shows (app/tool_data.h).
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs/relief-sweep/ DESTINATION ${_share}/sweeps/relief)
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs/profile-sweep/ DESTINATION ${_share}/sweeps/profile)
 install(FILES ${SHADERTWIN_GOLDEN_FILE} DESTINATION ${_share}/golden)
 install(FILES ${CMAKE_SOURCE_DIR}/sdk/tool_main.cpp DESTINATION ${_share})
 

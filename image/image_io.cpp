@@ -10,6 +10,7 @@
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
+#include "image/file_provenance.h"
 #include "image/png_structure.h"
 #include "image/stderr_capture.h"
 #include "image/unorm8.h"
@@ -58,6 +59,7 @@ void write_with_oiio(const std::string& path, const OIIO::ImageSpec& spec, OIIO:
 void write_exr(const std::string& path, const Image& image, const Metadata& metadata) {
     OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
     spec.attribute("compression", "zip");
+    for (const auto& [key, value] : file_provenance().attributes) spec.attribute("shadertwin:" + key, value);
     for (const auto& [key, value] : metadata) spec.attribute("shadertwin:" + key, value);
     write_with_oiio(path, spec, OIIO::TypeDesc::FLOAT, image.rgba.data());
 }
@@ -71,6 +73,7 @@ void write_png(const std::string& path, const Image& image) {
 void write_png_bytes(const std::string& path, int width, int height, int channels,
                      const unsigned char* bytes) {
     OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
+    for (const auto& [key, value] : file_provenance().attributes) spec.attribute("shadertwin:" + key, value);
     write_with_oiio(path, spec, OIIO::TypeDesc::UINT8, bytes);
 }
 
@@ -118,7 +121,7 @@ void write_text_file(const std::string& path, const std::string& text) {
     const std::string tmp = temp_name(path);
     {
         std::ofstream out(tmp, std::ios::binary);
-        out << text;
+        out << with_provenance(path, text, file_provenance().line);
         if (!out.flush()) {
             std::error_code ec;
             fs::remove(tmp, ec);

@@ -13,9 +13,11 @@ namespace st {
 
 using Metadata = std::map<std::string, std::string>;
 
-// Float RGBA EXR with the metadata as string attributes (provenance).
+// Float RGBA EXR with the metadata as string attributes, after the
+// process's provenance (file_provenance.h; `metadata` wins on a clash).
 void write_exr(const std::string& path, const Image& image, const Metadata& metadata);
-// 8-bit RGBA PNG holding to_unorm8() of each channel, as is.
+// 8-bit RGBA PNG holding to_unorm8() of each channel, as is. PNGs carry the
+// process's provenance as text chunks (file_provenance.h).
 void write_png(const std::string& path, const Image& image);
 // An 8-bit RGB(A) PNG from bytes already converted (heat maps).
 void write_png_bytes(const std::string& path, int width, int height, int channels,
@@ -27,7 +29,8 @@ inline constexpr int kMaxImageSide = 8192;
 // Throws std::runtime_error with one line on failure.
 Image read_image(const std::string& path, Metadata* metadata = nullptr);
 
-// Writes text through a temporary file and rename.
+// Writes text through a temporary file and rename, with the process's
+// provenance line in the file's syntax (file_provenance.h).
 void write_text_file(const std::string& path, const std::string& text);
 
 }  // namespace st

@@ -157,6 +157,7 @@ Scene load_scene_document(const std::string& name, nlohmann::json document, cons
         scene.description = r.string_or("description", "");
         const SceneSize size{r.integer("width", 1, kMaxResolution), r.integer("height", 1, kMaxResolution)};
         scene.criteria = Criteria::read(r);
+        scene.paper = PaperTiming::read(r);
         auto builder = scene_builders().find(scene.kind);
         if (builder == scene_builders().end()) throw InputError("unknown scene kind '" + scene.kind + "'");
         scene.frame = builder->second(r, size);

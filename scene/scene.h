@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 
 #include "frame/frame.h"
 #include "scene/criteria.h"
+#include "scene/paper_timing.h"
 
 namespace st {
 
@@ -20,6 +22,7 @@ struct Scene {
     std::string description;
     nlohmann::json document;  // after overrides
     Criteria criteria;
+    std::optional<PaperTiming> paper;  // a published frame rate for this scene's technique
     Frame frame;
     std::string golden_file;  // where `golden` keeps its hashes (scene_sources.h)
 };
