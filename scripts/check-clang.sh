@@ -9,7 +9,7 @@ build=build-clang
 if [ ! -f "$build/CMakeCache.txt" ]; then
   CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >&2
 fi
-cmake --build "$build" -j "$(nproc)" --target shadertwin unit_tests >&2
+cmake --build "$build" -j "$(nproc)" --target shadertwin unit_tests microbench >&2
 "$build/tests/unit_tests" --gtest_brief=1
 "$build/shadertwin" golden check >"$build/golden.out" || { grep -v ' ok$' "$build/golden.out" >&2; exit 1; }
 echo "ok   clang++ $(clang++ -dumpversion): $(grep -c ' ok$' "$build/golden.out") scenes match tests/golden/hashes.json"

@@ -57,6 +57,19 @@ for r in rows:
     assert r["pass"] and r["identical_fraction_float"] == 1 and r["coverage_mismatch"] == 0, r
 PY
 echo "ok   wraptwin compare: both scenes bit-identical to llvmpipe"
+# The tool has every command for its scenes: render through either GL
+# platform, bench, and a report with its own technique's part beside the
+# built-in ones, whose sweep charts come from the prefix.
+"$tool" render wrap-sphere-front --backend gl --gl egl --out "$work/render" | grep -q '"gl_platform":"egl"' ||
+  fail "wraptwin render through EGL"
+[ "$("$tool" bench wrap-sphere-front --frames 2 --json | wc -l)" -eq 2 ] || fail "wraptwin bench: one line per backend"
+rm "$prefix/share/shadertwin/sweeps/relief/relief-sweep-85deg.svg"  # so the prefix's charts are told from the tree's
+"$tool" report 'wrap-*' relief-mapping --set width=64 --set height=48 --frames 1 --out "$work/report" >/dev/null ||
+  fail "wraptwin report"
+grep -q 'id="t-wrap"' "$work/report/index.html" && grep -q 'id="t-relief"' "$work/report/index.html" ||
+  fail "the report has no part for the user's technique or the built-in one"
+[ "$(ls "$work/report/charts/" | grep -c '^relief-.*\.svg$')" -eq 3 ] || fail "the report did not take the sweep charts from the prefix"
+echo "ok   wraptwin render (EGL), bench and report"
 # Its goldens live in its own file, the built-in ones in the prefix.
 "$tool" golden check wrap-sphere-front wrap-sphere-back thin-slab-fragment-backlit >"$work/golden.txt" ||
   { cat "$work/golden.txt"; fail "wraptwin golden check"; }
