@@ -29,6 +29,7 @@
 #include "app/commands.h"
 #include "app/profile_exact.h"
 #include "app/profile_quality.h"
+#include "app/progress.h"
 #include "app/short_number.h"
 #include "app/svg_chart.h"
 #include "image/compare.h"
@@ -144,7 +145,10 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
     Backends backends(common.threads, common.gl_platform, glsl_roots());
     std::vector<Result> results(all.size());
     std::vector<Image> images(all.size());
+    Progress progress("sweep profile", all.size() * size_t(std::max(frames, 1)));
+    const auto label = [&](size_t i, int round) { return all[i].label() + ", round " + std::to_string(round + 1); };
     for (size_t i = 0; i < all.size(); ++i) {
+        progress.step(label(i, 0));
         results[i].setting = all[i];
         const Rendered first = backends.render(Backend::Cpu, scenes[i].frame);
         results[i].ms.push_back(first.ms);
@@ -156,7 +160,10 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
     // The other rounds time every setting once each, so that the machine's
     // drift falls on all of them alike.
     for (int round = 1; round < frames; ++round)
-        for (size_t i = 0; i < all.size(); ++i) results[i].ms.push_back(backends.render(Backend::Cpu, scenes[i].frame).ms);
+        for (size_t i = 0; i < all.size(); ++i) {
+            progress.step(label(i, round));
+            results[i].ms.push_back(backends.render(Backend::Cpu, scenes[i].frame).ms);
+        }
     bool ok = true;
     for (Result& r : results) r.median_ms = median(r.ms);
     for (Result& r : results) {
