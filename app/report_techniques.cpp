@@ -13,6 +13,7 @@
 #include "app/short_number.h"
 #include "app/tool_data.h"
 #include "image/file_provenance.h"
+#include "image/image_io.h"
 
 namespace st {
 
@@ -32,20 +33,6 @@ std::string svg_title(const std::string& svg) {
     const auto start = svg.find('>', open);
     const auto end = svg.find("</text>", start);
     return start == std::string::npos || end == std::string::npos ? "" : svg.substr(start + 1, end - start - 1);
-}
-
-// The chart as the sweep wrote it, with its own record of what made it (no
-// second one from write_text_file); through a temporary name, as every file.
-void copy_verbatim(const fs::path& from, const fs::path& to) {
-    const fs::path tmp = to.parent_path() / (".tmp-" + to.filename().string());
-    std::error_code ec;
-    fs::create_directories(to.parent_path(), ec);
-    if (!ec) fs::copy_file(from, tmp, fs::copy_options::overwrite_existing, ec);
-    if (!ec) fs::rename(tmp, to, ec);
-    if (ec) {
-        fs::remove(tmp, ec);
-        throw std::runtime_error("cannot copy " + from.string() + " to " + to.string());
-    }
 }
 
 std::string number_cell(double v, int digits) { return "<td class=\"num\">" + short_number(v, digits) + "</td>"; }
@@ -130,7 +117,11 @@ std::vector<SweepChart> copy_sweep_charts(const std::vector<std::string>& techni
         for (const fs::path& svg : svgs) {
             const std::string text = read_text(svg);
             const std::string name = technique + "-" + svg.filename().string();
-            copy_verbatim(svg, fs::path(out_dir) / "charts" / name);
+            std::error_code ec;
+            fs::create_directories(fs::path(out_dir) / "charts", ec);
+            if (ec) throw std::runtime_error("cannot create folder " + out_dir + "/charts: " + ec.message());
+            // The sweep's own record stays the one read; this run adds that it copied it.
+            write_copied_text_file(out_dir + "/charts/" + name, text);
             const std::string made = recorded_provenance(text);
             charts.push_back({technique, "charts/" + name,
                               svg_title(text) + ". From the sweep's last run kept with the tool (" +

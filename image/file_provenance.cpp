@@ -39,15 +39,17 @@ void set_file_provenance(FileProvenance provenance) {
 
 const FileProvenance& file_provenance() { return current(); }
 
-std::string with_provenance(const std::string& path, const std::string& text, const std::string& line) {
+std::string with_provenance(const std::string& path, const std::string& text, const std::string& line,
+                            const std::string& verb) {
     if (line.empty()) return text;
     const std::string ext = std::filesystem::path(path).extension().string();
-    if (ext == ".csv") return "# " + std::string(kMadeBy) + line + "\n" + text;
+    const std::string record = verb + ": " + line;
+    if (ext == ".csv") return "# " + record + "\n" + text;
     if (ext == ".svg" || ext == ".md" || ext == ".html" || ext == ".xml") {
         std::string out = text;
         const size_t at = insertion_point(text);
         if (at == text.size() && !text.empty() && text.back() != '\n') out += "\n";
-        out.insert(at == text.size() ? out.size() : at, "<!-- " + std::string(kMadeBy) + line + " -->\n");
+        out.insert(at == text.size() ? out.size() : at, "<!-- " + record + " -->\n");
         return out;
     }
     return text;

@@ -25,7 +25,11 @@ const FileProvenance& file_provenance();
 // "# made by: ..." line in .csv; a "<!-- made by: ... -->" line in .svg, .md,
 // .html and .xml (after an XML declaration or doctype, which must come
 // first); any other file unchanged. Nothing is added when `line` is empty.
-std::string with_provenance(const std::string& path, const std::string& text, const std::string& line);
+// `verb` names the act recorded: "made by" for a file the process made,
+// "copied by" for one it only copied (whose own record, if any, stays the
+// one recorded_provenance reads).
+std::string with_provenance(const std::string& path, const std::string& text, const std::string& line,
+                            const std::string& verb = "made by");
 
 // The line a stamped text records, or "" when it records none.
 std::string recorded_provenance(const std::string& text);

@@ -27,6 +27,11 @@ TEST(FileProvenance, TheRecordReadsBack) {
     EXPECT_EQ(recorded_provenance(with_provenance("t.svg", "<svg/>\n", line)), line);
     EXPECT_EQ(recorded_provenance(with_provenance("t.csv", "a\n", line)), line);
     EXPECT_EQ(recorded_provenance("<svg/>\n"), "");
+    // A copy's record comes first; the maker's is the one read.
+    const std::string made = with_provenance("t.svg", "<svg/>\n", line);
+    const std::string copied = with_provenance("t.svg", made, "shadertwin 0.2.0 (def)", "copied by");
+    EXPECT_EQ(copied.rfind("<!-- copied by: shadertwin 0.2.0 (def) -->\n", 0), 0u) << copied;
+    EXPECT_EQ(recorded_provenance(copied), line);
 }
 
 TEST(FileProvenance, TheLineCannotBreakOutOfAComment) {

@@ -117,11 +117,13 @@ Image read_image(const std::string& path, Metadata* metadata) {
     return image;
 }
 
-void write_text_file(const std::string& path, const std::string& text) {
+namespace {
+
+void write_whole(const std::string& path, const std::string& text) {
     const std::string tmp = temp_name(path);
     {
         std::ofstream out(tmp, std::ios::binary);
-        out << with_provenance(path, text, file_provenance().line);
+        out << text;
         if (!out.flush()) {
             std::error_code ec;
             fs::remove(tmp, ec);
@@ -129,6 +131,16 @@ void write_text_file(const std::string& path, const std::string& text) {
         }
     }
     commit(tmp, path);
+}
+
+}  // namespace
+
+void write_text_file(const std::string& path, const std::string& text) {
+    write_whole(path, with_provenance(path, text, file_provenance().line));
+}
+
+void write_copied_text_file(const std::string& path, const std::string& text) {
+    write_whole(path, with_provenance(path, text, file_provenance().line, "copied by"));
 }
 
 }  // namespace st

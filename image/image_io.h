@@ -32,5 +32,8 @@ Image read_image(const std::string& path, Metadata* metadata = nullptr);
 // Writes text through a temporary file and rename, with the process's
 // provenance line in the file's syntax (file_provenance.h).
 void write_text_file(const std::string& path, const std::string& text);
+// The same for a file this process copies rather than makes: recorded as
+// "copied by", after any record the text already holds.
+void write_copied_text_file(const std::string& path, const std::string& text);
 
 }  // namespace st

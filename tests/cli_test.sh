@@ -264,6 +264,7 @@ PY
       esac
       n=$((n + 1))
     done < <(find "$work/c" -type f ! -path '*/charts/*')
+    ls "$work"/c/report/charts/*.svg >/dev/null || fail "the report copied no charts"
     # Files written after the GL reference ran name its Mesa; a CPU-only command's do not.
     grep -q "Mesa $mesa" "$work/c/junit.xml" || fail "JUnit: no Mesa version"
     oiiotool --info -v "$work/c/relief-bloom.gl.png" | grep -qF "shadertwin:mesa: \"$mesa\"" || fail "GL PNG: no Mesa version"
@@ -273,9 +274,12 @@ import sys, xml.etree.ElementTree as ET
 props = {p.get("name"): p.get("value") for p in ET.parse(sys.argv[1]).getroot().iter("property")}
 assert props.get("shadertwin.commit") == sys.argv[2] and props.get("shadertwin.cpu_flags"), props
 PY
-    # The report's copies of the sweeps' charts keep their own record, not a second one.
+    # The report's copies of the sweeps' charts keep their own record (or
+    # none, if older than records) and add who copied them.
     for f in "$work"/c/report/charts/*.svg; do
-      [ "$(grep -c 'made by:' "$f")" -le 1 ] || fail "$f: recorded twice"
+      [ "$(grep -c 'made by:' "$f")" -le 1 ] || fail "$f: a second 'made by' record"
+      grep -q "<!-- copied by: shadertwin .*($commit).*CPU flags $flags.* -->" "$f" || fail "$f: no record of the copy"
+      n=$((n + 1))
     done
     echo "ok   provenance: $n files, each records shadertwin $commit and CPU flags $flags"
     ;;
