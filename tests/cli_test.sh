@@ -89,7 +89,9 @@ PY
     "$bin" render thin-slab-fragment-backlit --backend gl --out "$work/p" | grep -q '"gl_platform":"osmesa"' ||
       fail "auto did not take OSMesa on a machine that has it"
     # The platform is recorded in the GL image's metadata.
-    oiiotool --info -v "$work/egl/thin-slab-fragment-backlit.gl.exr" | grep -q 'gl_platform: "egl"' ||
+    # (grep reads a here-string, not a pipe: under pipefail, grep -q leaving
+    # early would fail the writer with SIGPIPE, now and then.)
+    grep -q 'gl_platform: "egl"' <<<"$(oiiotool --info -v "$work/egl/thin-slab-fragment-backlit.gl.exr")" ||
       fail "the EGL image does not say which platform drew it"
     expect_bad_input "--gl with an unknown platform" "$bin" render thin-slab-fragment-backlit --backend gl --gl glx
     SHADERTWIN_GL=vulkan expect_bad_input "SHADERTWIN_GL with an unknown platform" \
@@ -255,7 +257,9 @@ PY
           for want in "shadertwin:version: \"$(echo "$version" | sed -n 's/^shadertwin //p')\"" \
                       "shadertwin:commit: \"$commit\"" "shadertwin:cpu_flags: \"$flags\"" \
                       "shadertwin:compiler: " "shadertwin:lanes: "; do
-            echo "$info" | grep -qF "$want" || fail "$f does not record $want"
+            # No pipe (see gl_platforms); on a failure, all the file says, so
+            # that the cause shows in the log.
+            grep -qF "$want" <<<"$info" || { echo "$info" >&2; fail "$f does not record $want"; }
           done ;;
         *.csv) head -1 "$f" | grep -q "^# made by: shadertwin .*($commit).*CPU flags $flags" || fail "$f: first line $(head -1 "$f")" ;;
         *.svg|*.md|*.html|*.xml) grep -q "<!-- made by: shadertwin .*($commit).*CPU flags $flags.* -->" "$f" || fail "$f records nothing" ;;
@@ -267,7 +271,7 @@ PY
     ls "$work"/c/report/charts/*.svg >/dev/null || fail "the report copied no charts"
     # Files written after the GL reference ran name its Mesa; a CPU-only command's do not.
     grep -q "Mesa $mesa" "$work/c/junit.xml" || fail "JUnit: no Mesa version"
-    oiiotool --info -v "$work/c/relief-bloom.gl.png" | grep -qF "shadertwin:mesa: \"$mesa\"" || fail "GL PNG: no Mesa version"
+    grep -qF "shadertwin:mesa: \"$mesa\"" <<<"$(oiiotool --info -v "$work/c/relief-bloom.gl.png")" || fail "GL PNG: no Mesa version"
     ! grep -q "Mesa" "$work/c/profile.csv" || fail "profile's CSV names a GL reference it never ran"
     python3 - "$work/c/junit.xml" "$commit" <<'PY' || fail "JUnit: no provenance properties"
 import sys, xml.etree.ElementTree as ET
