@@ -150,6 +150,20 @@ void make_framebuffer(const GlApi& gl, GLuint colour, int level, int width, int 
 
 GLenum gl_target(const Texture& tex) { return tex.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D; }
 
+// The sampling state of `tex` (filters, wraps, LOD bias and range), set
+// through `seti` / `setf`: on the texture itself for an uploaded one, on a
+// sampler object for a render target, so both carry the same seven values.
+template <class SetI, class SetF>
+void set_sampling(const Texture& tex, SetI seti, SetF setf) {
+    seti(GL_TEXTURE_MIN_FILTER, gl_min_filter(tex.min_filter, tex.mip_filter));
+    seti(GL_TEXTURE_MAG_FILTER, gl_mag_filter(tex.mag_filter));
+    seti(GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap_s));
+    seti(GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap_t));
+    setf(GL_TEXTURE_LOD_BIAS, tex.lod_bias);
+    setf(GL_TEXTURE_MIN_LOD, tex.min_lod);
+    setf(GL_TEXTURE_MAX_LOD, tex.max_lod);
+}
+
 // Level by level and face by face, from the host's texels: RGBA8 as bytes,
 // the float formats as RGBA floats that GL converts to the storage format
 // (texture/texel_formats.h), into the texture bound to gl_target(tex).
@@ -171,13 +185,8 @@ void upload_texture(const GlApi& gl, const Texture& tex) {
                                 (l ? l->texels32.data() : tex.texels32.data()) + at);
         }
     }
-    gl.TexParameteri(target, GL_TEXTURE_MIN_FILTER, gl_min_filter(tex.min_filter, tex.mip_filter));
-    gl.TexParameteri(target, GL_TEXTURE_MAG_FILTER, gl_mag_filter(tex.mag_filter));
-    gl.TexParameteri(target, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap_s));
-    gl.TexParameteri(target, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap_t));
-    gl.TexParameterf(target, GL_TEXTURE_LOD_BIAS, tex.lod_bias);
-    gl.TexParameterf(target, GL_TEXTURE_MIN_LOD, tex.min_lod);
-    gl.TexParameterf(target, GL_TEXTURE_MAX_LOD, tex.max_lod);
+    set_sampling(tex, [&](GLenum pname, GLint v) { gl.TexParameteri(target, pname, v); },
+                 [&](GLenum pname, GLfloat v) { gl.TexParameterf(target, pname, v); });
 }
 
 void set_uniform(const GlApi& gl, GLuint program, const Uniform& u) {
@@ -366,13 +375,8 @@ void GlRenderer::prepare(const Frame& frame) {
                     // A render target: its texture, filtered by a sampler object.
                     name = state_->named.at(tex.target).texture;
                     gl.GenSamplers(1, &sampler);
-                    gl.SamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, gl_min_filter(tex.min_filter, tex.mip_filter));
-                    gl.SamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, gl_mag_filter(tex.mag_filter));
-                    gl.SamplerParameteri(sampler, GL_TEXTURE_WRAP_S, gl_wrap(tex.wrap_s));
-                    gl.SamplerParameteri(sampler, GL_TEXTURE_WRAP_T, gl_wrap(tex.wrap_t));
-                    gl.SamplerParameterf(sampler, GL_TEXTURE_LOD_BIAS, tex.lod_bias);
-                    gl.SamplerParameterf(sampler, GL_TEXTURE_MIN_LOD, tex.min_lod);
-                    gl.SamplerParameterf(sampler, GL_TEXTURE_MAX_LOD, tex.max_lod);
+                    set_sampling(tex, [&](GLenum pname, GLint v) { gl.SamplerParameteri(sampler, pname, v); },
+                                 [&](GLenum pname, GLfloat v) { gl.SamplerParameterf(sampler, pname, v); });
                 } else {
                     gl.GenTextures(1, &name);
                     gl.BindTexture(gl_target(tex), name);
