@@ -87,6 +87,34 @@ void BM_RasterizeTile(benchmark::State& state) {
 }
 BENCHMARK(BM_RasterizeTile);
 
+// Coverage of one 64x64 tile by a mesh of small triangles (7x7-pixel cells
+// split in two, off the pixel grid): most blocks are partly covered, so
+// this times the per-lane edge test that a large triangle rarely reaches.
+void BM_RasterizeSmallTriangles(benchmark::State& state) {
+    const glm::vec4 none[1] = {};
+    std::vector<SetupTriangle> tris;
+    std::vector<Plane> planes;
+    for (float y = 0.3f; y + 7 < 64; y += 7)
+        for (float x = 0.6f; x + 7 < 64; x += 7) {
+            SetupTriangle tri;
+            const SetupVertex a{WindowPos{x, y, 0.5f, 1}, none}, b{WindowPos{x + 7, y, 0.5f, 1}, none},
+                c{WindowPos{x + 7, y + 7, 0.5f, 1}, none}, d{WindowPos{x, y + 7, 0.5f, 1}, none};
+            if (setup_triangle(a, b, c, 0, 64, 64, tri, planes)) tris.push_back(tri);
+            if (setup_triangle(a, c, d, 0, 64, 64, tri, planes)) tris.push_back(tri);
+        }
+    std::vector<BlockCoverage> blocks;
+    long pixels = 0;
+    for (auto _ : state) {
+        blocks.clear();
+        for (const SetupTriangle& tri : tris) rasterize_in_tile(tri, TileRect{0, 0, 64, 64}, blocks);
+        benchmark::DoNotOptimize(blocks.data());
+        pixels += 64 * 64;
+    }
+    state.SetItemsProcessed(pixels);
+    state.SetLabel("tile pixels");
+}
+BENCHMARK(BM_RasterizeSmallTriangles);
+
 // Perspective-correct interpolation of 3 varying slots for one whole 4x4
 // block (kBlockLanes / kLanes twin inputs).
 void BM_InterpolateBlock(benchmark::State& state) {

@@ -11,32 +11,56 @@ namespace st {
 
 namespace {
 
-// Sixteen lanes of a block, as plain vector-extension types (these are
-// integers: the lane width of the shading runtime does not matter here).
-// Edge values are int64: a block's sixteen lanes as two halves of eight (one
-// zmm each with AVX-512; GCC splits a 16 x int64 vector badly).
-using I64Half = int64_t __attribute__((vector_size(8 * kBlockLanes / 2)));
-using I32Half = int32_t __attribute__((vector_size(4 * kBlockLanes / 2)));
-using I32Lanes = int32_t __attribute__((vector_size(4 * kBlockLanes)));
-
-constexpr I32Lanes kLaneX = {0, 1, 0, 1, 2, 3, 2, 3, 0, 1, 0, 1, 2, 3, 2, 3};
-constexpr I32Lanes kLaneY = {0, 0, 1, 1, 0, 0, 1, 1, 2, 2, 3, 3, 2, 2, 3, 3};
-constexpr I32Half kLaneXLow = {0, 1, 0, 1, 2, 3, 2, 3}, kLaneXHigh = {0, 1, 0, 1, 2, 3, 2, 3};
-constexpr I32Half kLaneYLow = {0, 0, 1, 1, 0, 0, 1, 1}, kLaneYHigh = {2, 2, 3, 3, 2, 2, 3, 3};
-
-// Bit i set where lane i is non-zero.
-inline unsigned lane_bits(I32Lanes m) {
+// Edge values are int64 (the fixed-point products exceed 32 bits). A partly
+// covered block tests its sixteen lanes in chunks of the widest int64 vector
+// the target holds in one register: 8 with AVX-512, 4 otherwise. (A wider
+// vector-extension type than the registers is split by GCC through the
+// stack: on AVX2 the 8-lane halves this used to take spent most of the
+// function's time in spills.)
 #if defined(__AVX512F__) && defined(__AVX512DQ__)
-    return _mm512_movepi32_mask(__m512i(m));
+constexpr int kChunkLanes = 8;
+#else
+constexpr int kChunkLanes = 4;
+#endif
+constexpr int kChunks = kBlockLanes / kChunkLanes;
+using I64Chunk = int64_t __attribute__((vector_size(8 * kChunkLanes)));
+
+// Bit j set where lane j of the chunk is non-zero (all ones or zero).
+inline unsigned chunk_bits(I64Chunk m) {
+#if defined(__AVX512F__) && defined(__AVX512DQ__)
+    return _mm512_movepi64_mask(__m512i(m));
+#elif defined(__AVX2__)
+    return unsigned(_mm256_movemask_pd(_mm256_castsi256_pd(__m256i(m))));
 #else
     unsigned bits = 0;
-    for (int lane = 0; lane < kBlockLanes; ++lane) bits |= unsigned(m[lane] != 0) << lane;
+    for (int j = 0; j < kChunkLanes; ++j) bits |= unsigned(m[j] != 0) << j;
     return bits;
 #endif
 }
 
-static_assert(block_lane_x(5) == 3 && block_lane_y(5) == 0 && block_lane_x(10) == 0 && block_lane_y(10) == 3,
-              "kLaneX/kLaneY follow shading/block_layout.h");
+// The lanes of a block in column dx, and in row dy (shading/block_layout.h).
+constexpr unsigned lanes_where(bool column, int d) {
+    unsigned bits = 0;
+    for (int lane = 0; lane < kBlockLanes; ++lane)
+        if ((column ? block_lane_x(lane) : block_lane_y(lane)) == d) bits |= 1u << lane;
+    return bits;
+}
+constexpr unsigned kColumnLanes[kBlockSize] = {lanes_where(true, 0), lanes_where(true, 1), lanes_where(true, 2),
+                                               lanes_where(true, 3)};
+constexpr unsigned kRowLanes[kBlockSize] = {lanes_where(false, 0), lanes_where(false, 1), lanes_where(false, 2),
+                                            lanes_where(false, 3)};
+static_assert(kColumnLanes[1] == 0x0a0a && kRowLanes[3] == 0xcc00, "block_layout.h's lane order");
+
+// The lanes of the block at (x, y) whose pixels lie in [x_lo, x_hi] x
+// [y_lo, y_hi], inclusive.
+inline unsigned box_lanes(int x, int y, int x_lo, int x_hi, int y_lo, int y_hi) {
+    unsigned columns = 0, rows = 0;
+    for (int d = 0; d < kBlockSize; ++d) {
+        if (x + d >= x_lo && x + d <= x_hi) columns |= kColumnLanes[d];
+        if (y + d >= y_lo && y + d <= y_hi) rows |= kRowLanes[d];
+    }
+    return columns & rows;
+}
 
 }  // namespace
 
@@ -47,12 +71,13 @@ void rasterize_in_tile(const SetupTriangle& tri, const TileRect& tile, std::vect
     const EdgeFunction* e = tri.edge;
     // Each edge's value at every lane of a block, relative to the block's
     // corner: exact integers, so stepping equals evaluating at() per pixel.
-    I64Half lane_offset[3][2];
-    for (int h = 0; h < 2; ++h) {
-        const I64Half lane_x = __builtin_convertvector(h ? kLaneXHigh : kLaneXLow, I64Half);
-        const I64Half lane_y = __builtin_convertvector(h ? kLaneYHigh : kLaneYLow, I64Half);
-        for (int i = 0; i < 3; ++i) lane_offset[i][h] = e[i].dcdx * lane_x + e[i].dcdy * lane_y;
-    }
+    I64Chunk lane_offset[3][kChunks];
+    for (int i = 0; i < 3; ++i)
+        for (int c = 0; c < kChunks; ++c)
+            for (int j = 0; j < kChunkLanes; ++j) {
+                const int lane = c * kChunkLanes + j;
+                lane_offset[i][c][j] = e[i].dcdx * block_lane_x(lane) + e[i].dcdy * block_lane_y(lane);
+            }
     // Over a block an edge function ranges from its corner value plus the
     // negative steps to the corner value plus the positive ones (it is
     // linear): a block all inside every edge and the box needs no per-pixel
@@ -73,17 +98,14 @@ void rasterize_in_tile(const SetupTriangle& tri, const TileRect& tile, std::vect
                 out.push_back({x, y, 0xffff});
                 continue;
             }
-            // A partly covered block: all sixteen lanes at once.
-            const I32Lanes px = x + kLaneX, py = y + kLaneY;
-            const I32Lanes in_box = (px >= tri.x_min) & (px <= x_hi) & (py >= tri.y_min) & (py <= y_hi);
-            I32Half in_edges[2];
-            for (int h = 0; h < 2; ++h)
-                in_edges[h] = __builtin_convertvector((row[0] + lane_offset[0][h] > 0) & (row[1] + lane_offset[1][h] > 0) &
-                                                          (row[2] + lane_offset[2][h] > 0),
-                                                      I32Half);
-            const I32Lanes edges = __builtin_shufflevector(in_edges[0], in_edges[1], 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10,
-                                                           11, 12, 13, 14, 15);
-            const unsigned mask = lane_bits(edges & in_box);
+            // A partly covered block: every lane against the three edges.
+            unsigned edges = 0;
+            for (int c = 0; c < kChunks; ++c) {
+                const I64Chunk inside = (row[0] + lane_offset[0][c] > 0) & (row[1] + lane_offset[1][c] > 0) &
+                                        (row[2] + lane_offset[2][c] > 0);
+                edges |= chunk_bits(inside) << (c * kChunkLanes);
+            }
+            const unsigned mask = edges & box_lanes(x, y, tri.x_min, x_hi, tri.y_min, y_hi);
             if (mask) out.push_back({x, y, mask});
         }
     }
