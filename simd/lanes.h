@@ -393,6 +393,23 @@ ST_INLINE void gather_pairs(const int32_t* base, Int index, Int& first, Int& sec
     const __m512i odd = _mm512_setr_epi32(1, 3, 5, 7, 9, 11, 13, 15, 17, 19, 21, 23, 25, 27, 29, 31);
     first = Int(IntV(_mm512_permutex2var_epi32(lo, even, hi)));
     second = Int(IntV(_mm512_permutex2var_epi32(lo, odd, hi)));
+#elif defined(ST_SIMD_AVX2)
+    // Eight 8-byte loads joined in registers: about as fast as two
+    // vpgatherdq on Zen 2 (microbench), and not microcoded anywhere.
+    auto pair = [&](int i) __attribute__((always_inline)) {
+        return _mm_loadl_epi64(reinterpret_cast<const __m128i*>(base + index.v[i]));
+    };
+    auto four = [&](int i) __attribute__((always_inline)) {
+        const __m128i a = _mm_unpacklo_epi64(pair(i), pair(i + 1)), b = _mm_unpacklo_epi64(pair(i + 2), pair(i + 3));
+        return _mm256_castsi256_ps(_mm256_inserti128_si256(_mm256_castsi128_si256(a), b, 1));
+    };
+    const __m256 lo = four(0), hi = four(4);
+    // lo holds lanes 0-3's pairs, hi lanes 4-7's; the even dwords of each
+    // 128-bit half are the first texels, in lane order 0 1 4 5 | 2 3 6 7.
+    const __m256 even = _mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(2, 0, 2, 0));
+    const __m256 odd = _mm256_shuffle_ps(lo, hi, _MM_SHUFFLE(3, 1, 3, 1));
+    first = Int(IntV(_mm256_permute4x64_epi64(_mm256_castps_si256(even), _MM_SHUFFLE(3, 1, 2, 0))));
+    second = Int(IntV(_mm256_permute4x64_epi64(_mm256_castps_si256(odd), _MM_SHUFFLE(3, 1, 2, 0))));
 #else
     for (int i = 0; i < kLanes; ++i) {
         int32_t pair[2];
