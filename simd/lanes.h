@@ -330,6 +330,25 @@ ST_INLINE Int permute(Int table, Int idx) {
 #endif
 }
 
+// Lane i of the result is entry idx[i] of the 2 * kLanes entries of lo
+// followed by hi, for idx in [0, 2 * kLanes).
+ST_INLINE Int permute2(Int lo, Int hi, Int idx) {
+#if defined(ST_SIMD_AVX512)
+    return Int(IntV(_mm512_permutex2var_epi32(__m512i(lo.v), __m512i(idx.v), __m512i(hi.v))));
+#elif defined(ST_SIMD_AVX2)
+    const __m256i i = __m256i(idx.v);
+    const __m256i a = _mm256_permutevar8x32_epi32(__m256i(lo.v), i), b = _mm256_permutevar8x32_epi32(__m256i(hi.v), i);
+    return Int(IntV(_mm256_blendv_epi8(a, b, _mm256_cmpgt_epi32(i, _mm256_set1_epi32(kLanes - 1)))));
+#else
+    IntV r;
+    for (int i = 0; i < kLanes; ++i) {
+        const int j = idx.v[i] & (2 * kLanes - 1);
+        r[i] = j < kLanes ? lo.v[j] : hi.v[j - kLanes];
+    }
+    return Int(r);
+#endif
+}
+
 ST_INLINE int32_t reduce_min(Int x) {
 #if defined(ST_SIMD_AVX512)
     return _mm512_reduce_min_epi32(__m512i(x.v));

@@ -121,6 +121,24 @@ TEST(Lanes, PermuteReduceAndMulhrs) {
     }
     EXPECT_EQ(reduce_min(table), lo);
     EXPECT_EQ(reduce_max(table), hi);
+    // permute2: indices into table followed by a second table, both halves
+    // reached (every lane of idx2 differs, and lanes take either half).
+    Int second, idx2;
+    for (int lane = 0; lane < kLanes; ++lane) {
+        second.set(lane, -1000 - lane * 13);
+        idx2.set(lane, (lane * 7 + 5) % (2 * kLanes));
+    }
+    const Int p2 = permute2(table, second, idx2);
+    for (int lane = 0; lane < kLanes; ++lane)
+        EXPECT_EQ(p2[lane], idx2[lane] < kLanes ? table[idx2[lane]] : second[idx2[lane] - kLanes]) << lane;
+    // The reductions see every lane: a minimum or maximum in any one.
+    for (int at = 0; at < kLanes; ++at) {
+        Int one(5);
+        one.set(at, -7);
+        EXPECT_EQ(reduce_min(one), -7) << at;
+        one.set(at, 9);
+        EXPECT_EQ(reduce_max(one), 9) << at;
+    }
     // pmulhrsw per 16-bit half, against its definition.
     std::mt19937 rng(3);
     for (int round = 0; round < 1000; ++round) {

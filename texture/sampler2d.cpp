@@ -125,10 +125,10 @@ Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
         level_base_.push_back(int32_t(texels));
         texels += size_t(w) * size_t(h);
     }
-    for (int l = 0; l <= last_level_ && last_level_ < kLanes; ++l) {
-        width_table_.set(l, level_width_[size_t(l)]);
-        height_table_.set(l, level_height_[size_t(l)]);
-        base_table_.set(l, level_base_[size_t(l)]);
+    for (int l = 0; l <= last_level_ && last_level_ < 2 * kLanes; ++l) {
+        width_table_[l / kLanes].set(l % kLanes, level_width_[size_t(l)]);
+        height_table_[l / kLanes].set(l % kLanes, level_height_[size_t(l)]);
+        base_table_[l / kLanes].set(l % kLanes, level_base_[size_t(l)]);
     }
     auto level_bytes = [&](int l) { return l ? texture.mips[size_t(l - 1)].texels8.data() : texture.texels8.data(); };
     auto level_floats = [&](int l) {
@@ -188,9 +188,13 @@ ST_INLINE Sampler2D::LevelLanes Sampler2D::level_lanes(Int level) const {
         l.height = Int(tex_->height);
         l.base = Int(0);
     } else if (last_level_ < kLanes) {
-        l.width = simd::permute(width_table_, level);
-        l.height = simd::permute(height_table_, level);
-        l.base = simd::permute(base_table_, level);
+        l.width = simd::permute(width_table_[0], level);
+        l.height = simd::permute(height_table_[0], level);
+        l.base = simd::permute(base_table_[0], level);
+    } else if (last_level_ < 2 * kLanes) {
+        l.width = simd::permute2(width_table_[0], width_table_[1], level);
+        l.height = simd::permute2(height_table_[0], height_table_[1], level);
+        l.base = simd::permute2(base_table_[0], base_table_[1], level);
     } else {
         const Mask all(true);
         l.width = simd::gather(level_width_.data(), level, all);
