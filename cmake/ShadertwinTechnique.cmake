@@ -81,6 +81,12 @@ function(shadertwin_add_technique)
   if(NOT TARGET ${ARG_TOOL})
     add_executable(${ARG_TOOL} "${shadertwin_DATA_DIR}/tool_main.cpp")
     target_link_libraries(${ARG_TOOL} PRIVATE shadertwin::sdk)
+    # LTO objects in the libraries are optimised at the link either way; as
+    # an LTO target the tool's link gets -flto=auto (parallel jobs, not the
+    # linker plugin's serial default) and its twins join the inlining.
+    if(shadertwin_LTO)
+      set_property(TARGET ${ARG_TOOL} PROPERTY INTERPROCEDURAL_OPTIMIZATION ON)
+    endif()
   endif()
   get_target_property(techniques ${ARG_TOOL} SHADERTWIN_TECHNIQUES)
   if(techniques AND ARG_NAME IN_LIST techniques)

@@ -39,6 +39,12 @@ install(FILES ${CMAKE_SOURCE_DIR}/sdk/tool_main.cpp DESTINATION ${_share})
 set(_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/shadertwin)
 install(EXPORT shadertwinTargets NAMESPACE shadertwin:: DESTINATION ${_cmake_dir})
 set(SHADERTWIN_DATA_INSTALL_DIR ${_share})
+# Whether the libraries hold LTO objects (shadertwinConfig.cmake.in).
+if(CMAKE_INTERPROCEDURAL_OPTIMIZATION)
+  set(SHADERTWIN_LTO ON)
+else()
+  set(SHADERTWIN_LTO OFF)
+endif()
 configure_package_config_file(${CMAKE_SOURCE_DIR}/cmake/shadertwinConfig.cmake.in
                               ${CMAKE_BINARY_DIR}/cmake/shadertwinConfig.cmake
                               INSTALL_DESTINATION ${_cmake_dir}
