@@ -349,18 +349,25 @@ ST_INLINE Int permute2(Int lo, Int hi, Int idx) {
 #endif
 }
 
+#if defined(ST_SIMD_AVX2)
+// The eight lanes folded by `op` (min or max) in registers: GCC builds a
+// plain loop's halves through the stack, and the reload waits on a failed
+// store forward (perf: a third of Sampler2D::sample on Zen 2).
+template <class Op>
+ST_INLINE int32_t reduce8(Int x, Op op) {
+    const __m256i v = __m256i(x.v);
+    __m128i r = op(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
+    r = op(r, _mm_shuffle_epi32(r, _MM_SHUFFLE(1, 0, 3, 2)));
+    r = op(r, _mm_shuffle_epi32(r, _MM_SHUFFLE(2, 3, 0, 1)));
+    return _mm_cvtsi128_si32(r);
+}
+#endif
+
 ST_INLINE int32_t reduce_min(Int x) {
 #if defined(ST_SIMD_AVX512)
     return _mm512_reduce_min_epi32(__m512i(x.v));
 #elif defined(ST_SIMD_AVX2)
-    // In registers: GCC builds the plain loop's halves through the stack,
-    // and the reload waits on a failed store forward (perf: a third of
-    // Sampler2D::sample on Zen 2).
-    const __m256i v = __m256i(x.v);
-    __m128i r = _mm_min_epi32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
-    r = _mm_min_epi32(r, _mm_shuffle_epi32(r, _MM_SHUFFLE(1, 0, 3, 2)));
-    r = _mm_min_epi32(r, _mm_shuffle_epi32(r, _MM_SHUFFLE(2, 3, 0, 1)));
-    return _mm_cvtsi128_si32(r);
+    return reduce8(x, [](__m128i a, __m128i b) { return _mm_min_epi32(a, b); });
 #else
     int32_t r = x.v[0];
     for (int i = 1; i < kLanes; ++i) r = x.v[i] < r ? x.v[i] : r;
@@ -371,14 +378,7 @@ ST_INLINE int32_t reduce_max(Int x) {
 #if defined(ST_SIMD_AVX512)
     return _mm512_reduce_max_epi32(__m512i(x.v));
 #elif defined(ST_SIMD_AVX2)
-    // In registers: GCC builds the plain loop's halves through the stack,
-    // and the reload waits on a failed store forward (perf: a third of
-    // Sampler2D::sample on Zen 2).
-    const __m256i v = __m256i(x.v);
-    __m128i r = _mm_max_epi32(_mm256_castsi256_si128(v), _mm256_extracti128_si256(v, 1));
-    r = _mm_max_epi32(r, _mm_shuffle_epi32(r, _MM_SHUFFLE(1, 0, 3, 2)));
-    r = _mm_max_epi32(r, _mm_shuffle_epi32(r, _MM_SHUFFLE(2, 3, 0, 1)));
-    return _mm_cvtsi128_si32(r);
+    return reduce8(x, [](__m128i a, __m128i b) { return _mm_max_epi32(a, b); });
 #else
     int32_t r = x.v[0];
     for (int i = 1; i < kLanes; ++i) r = x.v[i] > r ? x.v[i] : r;
