@@ -1,6 +1,7 @@
 // json_reader.cpp: see json_reader.h.
 #include "scene/json_reader.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -10,19 +11,73 @@ namespace st {
 
 namespace {
 
-template <class Text> nlohmann::json parse_bounded(Text& text, const std::string& what) {
-    const nlohmann::json::parser_callback_t bound = [&](int depth, nlohmann::json::parse_event_t,
-                                                        nlohmann::json&) {
-        if (depth > kMaxJsonDepth)
-            throw InputError(what + ": nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+// nlohmann's own DOM builder behind a depth check on every event. The parse
+// callback would do the same check, but its builder revisits the open
+// container's members each time an object closes (json_sax_dom_callback_
+// parser::end_object), which made a scene of n triangles load in O(n^2).
+// Depth counts as the callback counted it: the containers open around a
+// value or key, or before a container opens; deeper than kMaxJsonDepth is
+// refused when the parser reaches it, so a syntax error before that point
+// still reads as malformed text.
+class BoundedDomBuilder {
+public:
+    using json = nlohmann::json;
+    BoundedDomBuilder(json& result, const std::string& what) : dom_(result, false), what_(what) {}
+
+    bool null() { return check() && dom_.null(); }
+    bool boolean(bool v) { return check() && dom_.boolean(v); }
+    bool number_integer(json::number_integer_t v) { return check() && dom_.number_integer(v); }
+    bool number_unsigned(json::number_unsigned_t v) { return check() && dom_.number_unsigned(v); }
+    bool number_float(json::number_float_t v, const json::string_t& s) { return check() && dom_.number_float(v, s); }
+    bool string(json::string_t& v) { return check() && dom_.string(v); }
+    bool binary(json::binary_t& v) { return check() && dom_.binary(v); }
+    bool key(json::string_t& v) { return check() && dom_.key(v); }
+    bool start_object(std::size_t n) { return check() && (++open_, dom_.start_object(n)); }
+    bool start_array(std::size_t n) { return check() && (++open_, dom_.start_array(n)); }
+    bool end_object() { return --open_, dom_.end_object(); }
+    bool end_array() { return --open_, dom_.end_array(); }
+    bool parse_error(std::size_t at, const std::string& token, const nlohmann::detail::exception& e) {
+        return dom_.parse_error(at, token, e);
+    }
+    bool errored() const { return dom_.is_errored(); }
+
+private:
+    bool check() const {
+        if (open_ > kMaxJsonDepth)
+            throw InputError(what_ + ": nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
         return true;
-    };
-    return nlohmann::json::parse(text, bound, false);
+    }
+    nlohmann::detail::json_sax_dom_parser<json> dom_;
+    const std::string& what_;
+    int open_ = 0;
+};
+
+template <class Text> nlohmann::json parse_bounded(Text& text, const std::string& what) {
+    nlohmann::json result;
+    BoundedDomBuilder builder(result, what);
+    // Malformed text is a discarded value, as nlohmann::json::parse(text, nullptr, false) gives.
+    if (!nlohmann::json::sax_parse(text, &builder) || builder.errored()) return nlohmann::json(nlohmann::json::value_t::discarded);
+    return result;
 }
 
 }  // namespace
 
-nlohmann::json parse_json(std::istream& text, const std::string& what) { return parse_bounded(text, what); }
+nlohmann::json parse_json(std::istream& text, const std::string& what) {
+    // Read whole (in one piece where the stream knows its length), then
+    // parsed from memory, where nlohmann's lexer runs faster than through a
+    // stream buffer one character at a time.
+    std::string whole;
+    const std::istream::pos_type start = text.tellg();
+    if (start != std::istream::pos_type(-1) && text.seekg(0, std::ios::end)) {
+        const std::istream::pos_type end = text.tellg();
+        text.seekg(start);
+        if (end != std::istream::pos_type(-1) && end > start) whole.reserve(size_t(end - start));
+    }
+    text.clear();
+    char chunk[1 << 16];
+    while (text.read(chunk, sizeof chunk) || text.gcount() > 0) whole.append(chunk, size_t(text.gcount()));
+    return parse_bounded(whole, what);
+}
 nlohmann::json parse_json(const std::string& text, const std::string& what) { return parse_bounded(text, what); }
 
 
@@ -45,9 +100,10 @@ JsonReader::JsonReader(const nlohmann::json& object, std::string path)
 bool JsonReader::has(const std::string& key) const { return object_.contains(key); }
 
 const nlohmann::json& JsonReader::get(const std::string& key) {
-    if (!object_.contains(key)) throw InputError("missing field '" + field(key) + "'");
-    read_.insert(key);
-    return object_.at(key);
+    const auto it = object_.find(key);
+    if (it == object_.end()) throw InputError("missing field '" + field(key) + "'");
+    read_.push_back(&*it);
+    return *it;
 }
 
 double JsonReader::checked_number(const nlohmann::json& v, const std::string& where, double lo, double hi) {
@@ -119,8 +175,9 @@ std::vector<double> JsonReader::numbers(const std::string& key, size_t min_len, 
                                         double lo, double hi) {
     const nlohmann::json& v = array(key, min_len, max_len);
     std::vector<double> out;
+    out.reserve(v.size());
     for (size_t i = 0; i < v.size(); ++i)
-        out.push_back(checked_number(v[i], field(key) + "." + std::to_string(i), lo, hi));
+        out.push_back(checked_number(v[i], [&] { return field(key) + "." + std::to_string(i); }, lo, hi));
     return out;
 }
 
@@ -140,7 +197,8 @@ std::vector<JsonReader> JsonReader::objects(const std::string& key, size_t min_l
 
 void JsonReader::finish() const {
     for (const auto& [key, value] : object_.items())
-        if (!read_.count(key)) throw InputError("unknown field '" + field(key) + "'");
+        if (std::find(read_.begin(), read_.end(), &value) == read_.end())
+            throw InputError("unknown field '" + field(key) + "'");
 }
 
 }  // namespace st

@@ -5,9 +5,10 @@
 // so a typo in a scene file is an error, not a silent default.
 #pragma once
 
+#include <cmath>
+#include <concepts>
 #include <istream>
 #include <optional>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,9 @@ public:
     JsonReader object(const std::string& key);
     std::optional<JsonReader> object_if(const std::string& key);
     std::vector<JsonReader> objects(const std::string& key, size_t min_len, size_t max_len);
+    // The same, one object at a time: for arrays as long as a mesh's
+    // triangles, whose readers need not all exist at once.
+    template <class Visit> void for_each_object(const std::string& key, size_t min_len, size_t max_len, Visit&& visit);
     // The raw array at `key` (marked as read), for arrays of arrays.
     const nlohmann::json& array(const std::string& key, size_t min_len, size_t max_len);
 
@@ -56,12 +60,31 @@ public:
 
     // Checks a JSON value is a finite number in [lo, hi]; `where` names it.
     static double checked_number(const nlohmann::json& v, const std::string& where, double lo, double hi);
+    // The same with the name made only when the value is refused: a mesh's
+    // millions of numbers are read without building a path for each.
+    template <std::invocable Where> static double checked_number(const nlohmann::json& v, Where&& where, double lo, double hi) {
+        if (v.is_number()) {
+            const double x = v.get<double>();
+            if (std::isfinite(x) && x >= lo && x <= hi) return x;
+        }
+        return checked_number(v, std::string(where()), lo, hi);  // throws
+    }
 
 private:
     const nlohmann::json& get(const std::string& key);
     const nlohmann::json& object_;
     std::string path_;
-    std::set<std::string> read_;
+    std::vector<const nlohmann::json*> read_;  // the members read (an object has a handful)
 };
+
+template <class Visit>
+void JsonReader::for_each_object(const std::string& key, size_t min_len, size_t max_len, Visit&& visit) {
+    const nlohmann::json& v = array(key, min_len, max_len);
+    const std::string prefix = field(key) + ".";
+    for (size_t i = 0; i < v.size(); ++i) {
+        JsonReader item(v[i], prefix + std::to_string(i));
+        visit(item);
+    }
+}
 
 }  // namespace st

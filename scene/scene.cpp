@@ -125,7 +125,8 @@ Scene load_scene(const std::string& name_or_path, const std::vector<std::string>
         const fs::path canonical = fs::weakly_canonical(path, ec);
         if (!ec)
             for (const SceneEntry& e : scene_sources().entries())
-                if (fs::weakly_canonical(e.path, ec) == canonical && !ec) golden = e.golden_file;
+                if (fs::path(e.path).filename() == canonical.filename() && fs::weakly_canonical(e.path, ec) == canonical && !ec)
+                    golden = e.golden_file;
     }
     std::ifstream in(path);
     if (!in) {
