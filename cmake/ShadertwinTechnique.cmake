@@ -17,6 +17,13 @@
 # criteria) and <NAME>.<scene>.golden (the CPU image against the golden
 # hash), labelled <NAME>, so `ctest -L <NAME>` runs them.
 # Relative paths are taken from the calling CMakeLists.txt's folder.
+#
+# SHADERTWIN_LTO=ON|OFF: link the tool with link-time optimisation. ON
+# inlines the GLSL math and the pipeline into the twins (the speed `bench`
+# should measure) but makes every link a minute long; OFF links in seconds,
+# for the edit-compare loop. Default: ON for Release and MinSizeRel builds,
+# OFF otherwise (Debug, RelWithDebInfo, none). The images are the same
+# either way (tests/sdk_test.sh checks the example's hashes in both).
 
 function(_shadertwin_absolute out)
   set(result)
@@ -34,6 +41,28 @@ function(_shadertwin_cpp_strings out)
     string(APPEND result "R\"st(${s})st\", ")
   endforeach()
   set(${out} "{${result}}" PARENT_SCOPE)
+endfunction()
+
+# Whether the tool links with LTO (SHADERTWIN_LTO above).
+function(_shadertwin_lto out)
+  if(DEFINED SHADERTWIN_LTO)
+    set(want ${SHADERTWIN_LTO})
+  elseif(CMAKE_BUILD_TYPE MATCHES "^(Release|MinSizeRel)$")
+    set(want ON)
+  else()
+    set(want OFF)
+  endif()
+  if(want AND NOT shadertwin_LTO)
+    if(DEFINED SHADERTWIN_LTO)
+      message(WARNING "SHADERTWIN_LTO=ON, but the installed shadertwin libraries hold no LTO objects: linking without")
+    endif()
+    set(want OFF)
+  endif()
+  if(want)
+    set(${out} ON PARENT_SCOPE)
+  else()
+    set(${out} OFF PARENT_SCOPE)
+  endif()
 endfunction()
 
 function(shadertwin_add_technique)
@@ -81,11 +110,12 @@ function(shadertwin_add_technique)
   if(NOT TARGET ${ARG_TOOL})
     add_executable(${ARG_TOOL} "${shadertwin_DATA_DIR}/tool_main.cpp")
     target_link_libraries(${ARG_TOOL} PRIVATE shadertwin::sdk)
-    # LTO objects in the libraries are optimised at the link either way; as
-    # an LTO target the tool's link gets -flto=auto (parallel jobs, not the
-    # linker plugin's serial default) and its twins join the inlining.
-    if(shadertwin_LTO)
-      set_property(TARGET ${ARG_TOOL} PROPERTY INTERPROCEDURAL_OPTIMIZATION ON)
+    _shadertwin_lto(lto)
+    # With LTO the link gets -flto=auto (parallel jobs) and the twins join
+    # the inlining; without, the libraries' fat objects link as plain code.
+    set_property(TARGET ${ARG_TOOL} PROPERTY INTERPROCEDURAL_OPTIMIZATION ${lto})
+    if(NOT lto AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+      target_link_options(${ARG_TOOL} PRIVATE -fno-lto)
     endif()
   endif()
   get_target_property(techniques ${ARG_TOOL} SHADERTWIN_TECHNIQUES)
