@@ -199,13 +199,18 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     sweep->add_option("--frames", sweep_frames, "relief, profile: timed rounds per setting (medians)")->check(CLI::Range(1, 1000));
     add_common(sweep, common, gl_given);
 
-    int report_frames = 10;
+    st::ReportOptions report_options;
     auto* report = app.add_subcommand("report", "scenes on both backends, compared and timed, as an HTML page");
     report->add_option("scenes", scenes, "scene names, paths or shell patterns ('relief-*'); default: every scene");
     report->add_option("--out", out_dir, "output folder");
     report->add_option("--junit", junit, "also write JUnit XML: a test case per scene and output")->type_name("FILE");
-    report->add_option("--frames", report_frames, "frames per backend for the cost table (0: none)")
+    report->add_option("--frames", report_options.frames, "frames per backend for the cost table (0: none)")
         ->check(CLI::Range(0, 100000));
+    report->add_flag("--exr", report_options.exr,
+                     "keep every scene's float images (EXR); by default only failing scenes keep theirs");
+    report->add_flag("--brief", report_options.brief,
+                     "print a few lines (results per technique, the slowest scene, the report's path) instead of "
+                     "the Markdown tables, which DIR/summary.md keeps");
     add_common(report, common, gl_given);
 
     // An empty value is no number (CLI11 would take it as 0): every numeric
@@ -246,7 +251,11 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
                                 any ? std::optional<st::Thresholds>(thresholds) : std::nullopt);
         }
         if (*golden) return st::cmd_golden(action, scenes, junit, common);
-        if (*report) return st::cmd_report(scenes, out_dir, report_frames, junit, common);
+        if (*report) {
+            report_options.out_dir = out_dir;
+            report_options.junit = junit;
+            return st::cmd_report(scenes, report_options, common);
+        }
         if (*slab || *profile) {
             for (const CLI::Option* option : (*slab ? slab : profile)->get_options())
                 if (option->count() > 0)

@@ -38,9 +38,15 @@ int cmd_diff(const std::string& a, const std::string& b, const std::string& out_
              const std::optional<Thresholds>& thresholds);
 int cmd_golden(const std::string& action, const std::vector<std::string>& scenes, const std::string& junit,
                const CommonOptions& common);
+struct ReportOptions {
+    std::string out_dir;
+    int frames = 10;     // timed frames per backend, 0: none
+    std::string junit;   // JUnit XML file, empty: none
+    bool exr = false;    // keep every scene's EXR images, not only the failing ones'
+    bool brief = false;  // stdout: a few lines that say what was found, not the Markdown tables
+};
 // `scenes`: names, paths or patterns (scene.h); every scene when empty.
-int cmd_report(const std::vector<std::string>& scenes, const std::string& out_dir, int frames,
-               const std::string& junit, const CommonOptions& common);
+int cmd_report(const std::vector<std::string>& scenes, const ReportOptions& options, const CommonOptions& common);
 int cmd_bench(const std::vector<std::string>& scenes, int frames, bool json, bool scaling, bool per_pass,
               const CommonOptions& common);
 int cmd_optics_figures(const std::string& out_dir, long long photons, int threads);

@@ -9,9 +9,9 @@
 namespace st {
 
 std::string write_rendered(const std::string& dir, const std::string& scene, Backend backend,
-                           const Image& image, Backends& backends) {
+                           const Image& image, Backends& backends, bool exr) {
     const std::string stem = scene + "." + backend_name(backend);
-    write_exr(dir + "/" + stem + ".exr", image, backends.provenance(backend));
+    if (exr) write_exr(dir + "/" + stem + ".exr", image, backends.provenance(backend));
     write_png(dir + "/" + stem + ".png", image);
     return stem + ".png";
 }
@@ -33,7 +33,7 @@ Frame perturbed(const Frame& frame, int ulps) {
 
 }  // namespace
 
-SceneComparison compare_scene(const Scene& scene, Backends& backends, const std::string& out_dir) {
+SceneComparison compare_scene(const Scene& scene, Backends& backends, const std::string& out_dir, CompareFiles files) {
     SceneComparison c;
     c.scene = scene.name;
     const Rendered cpu = backends.render(Backend::Cpu, scene.frame);
@@ -69,8 +69,9 @@ SceneComparison compare_scene(const Scene& scene, Backends& backends, const std:
     c.cpu_hash = pixel_hash(cpu.image);
     c.gl_hash = pixel_hash(gl.image);
 
-    c.cpu_png = write_rendered(out_dir, scene.name, Backend::Cpu, cpu.image, backends);
-    c.gl_png = write_rendered(out_dir, scene.name, Backend::Gl, gl.image, backends);
+    const bool share = files.share_identical_png && c.cpu_hash == c.gl_hash;
+    c.cpu_png = write_rendered(out_dir, scene.name, Backend::Cpu, cpu.image, backends, false);
+    c.gl_png = share ? c.cpu_png : write_rendered(out_dir, scene.name, Backend::Gl, gl.image, backends, false);
     c.diff_png = scene.name + ".diff.png";
     const auto heat = heat_map(cpu.image, gl.image);
     write_png_bytes(out_dir + "/" + c.diff_png, cpu.image.width, cpu.image.height, 3, heat.data());
@@ -87,12 +88,26 @@ SceneComparison compare_scene(const Scene& scene, Backends& backends, const std:
         o.cpu_hash = pixel_hash(a.image);
         o.gl_hash = pixel_hash(b.image);
         const std::string stem = scene.name + "." + a.name;
-        o.cpu_png = write_rendered(out_dir, stem, Backend::Cpu, a.image, backends);
-        o.gl_png = write_rendered(out_dir, stem, Backend::Gl, b.image, backends);
+        o.cpu_png = write_rendered(out_dir, stem, Backend::Cpu, a.image, backends, false);
+        o.gl_png = files.share_identical_png && o.cpu_hash == o.gl_hash
+                       ? o.cpu_png
+                       : write_rendered(out_dir, stem, Backend::Gl, b.image, backends, false);
         o.diff_png = stem + ".diff.png";
         const auto h = heat_map(a.image, b.image);
         write_png_bytes(out_dir + "/" + o.diff_png, a.image.width, a.image.height, 3, h.data());
         c.outputs.push_back(std::move(o));
+    }
+    // The float images last, once the verdict is known.
+    if (files.every_exr || !c.pass()) {
+        auto write = [&](const std::string& stem, Backend backend, const Image& image) {
+            write_exr(out_dir + "/" + stem + "." + backend_name(backend) + ".exr", image, backends.provenance(backend));
+        };
+        write(scene.name, Backend::Cpu, cpu.image);
+        write(scene.name, Backend::Gl, gl.image);
+        for (size_t i = 0; i < cpu.outputs.size(); ++i) {
+            write(scene.name + "." + cpu.outputs[i].name, Backend::Cpu, cpu.outputs[i].image);
+            write(scene.name + "." + gl.outputs[i].name, Backend::Gl, gl.outputs[i].image);
+        }
     }
     return c;
 }

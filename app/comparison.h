@@ -44,7 +44,17 @@ struct SceneComparison {
     }
 };
 
-SceneComparison compare_scene(const Scene& scene, Backends& backends, const std::string& out_dir);
+// What compare_scene writes beside its verdict. `compare` keeps everything;
+// `report` keeps a passing run's folder small: the float images
+// (<scene>.<backend>.exr, and each named output's) of failing scenes only,
+// and no second PNG where llvmpipe's image is the CPU's to the bit (its
+// gl_png then names the CPU's file).
+struct CompareFiles {
+    bool every_exr = true;
+    bool share_identical_png = false;
+};
+SceneComparison compare_scene(const Scene& scene, Backends& backends, const std::string& out_dir,
+                              CompareFiles files = {});
 
 nlohmann::json to_json(const SceneComparison& c);
 // The scene's JUnit cases (app/junit.h): the scene and each named output,
@@ -54,8 +64,8 @@ void add_junit_cases(JunitReport& junit, const Scene& scene, const SceneComparis
 // The metrics as a JSON object (also used by `diff`).
 nlohmann::json metrics_json(const CompareMetrics& m);
 
-// Writes `<dir>/<scene>.<backend>.exr` and `.png`; returns the PNG's name.
+// Writes `<dir>/<scene>.<backend>.png` and, with `exr`, `.exr`; returns the PNG's name.
 std::string write_rendered(const std::string& dir, const std::string& scene, Backend backend,
-                           const Image& image, Backends& backends);
+                           const Image& image, Backends& backends, bool exr = true);
 
 }  // namespace st

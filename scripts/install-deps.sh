@@ -24,8 +24,12 @@ if [ "${#missing[@]}" -eq 0 ]; then
   exit 0
 fi
 echo "installing: ${missing[*]}" >&2
+source "$(dirname "$0")/quiet.sh"
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
 export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+install_packages() {
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+run_logged install install_packages

@@ -211,14 +211,21 @@ summary = summary[:summary.index("</table>")]
 assert summary.count('<tr class="passed">') == sum(r["pass"] for r in rows), "summary rows"
 for r in rows:
     assert 'href="#s-%s"' % r["scene"] in summary, r["scene"]
-assert dom.count("<details") == len(rows)
-# Each technique's part: relief's fps beside Table 1's row (scenes/relief-mapping.json,
-# "paper"), with this run's rates and their ratio; its sweep's charts; a technique
-# without a published rate says so.
-tech = dom[dom.index('id="techniques"'):dom.index('id="scenes"')]
-for t in ("relief", "triangles", "conformance"):
-    assert 'id="t-%s"' % t in tech, t
-relief = tech[tech.index('id="t-relief"'):]
+assert dom.count('<details id="s-') == len(rows)
+# The page opens on pictures (issue 25): the gallery comes before every table,
+# a row of thumbnails per technique, each linking to its scene's detail; the
+# conformance scenes folded (all pass here); relief's fps beside Table 1's row
+# (scenes/relief-mapping.json, "paper"), with this run's rates and their ratio;
+# a technique without a published rate says so.
+gallery = dom[dom.index('id="gallery"'):dom.index('id="results"')]
+assert "<table" not in dom[:dom.index('id="gallery"')], "a table above the gallery"
+thumbs = re.findall(r'<a class="thumb( failed)?" href="#s-([^"]+)"', gallery)
+assert sorted(t[1] for t in thumbs) == sorted(r["scene"] for r in rows), thumbs
+assert all(bool(t[0]) == (not r["pass"]) for t in thumbs for r in rows if r["scene"] == t[1]), "failing frames"
+for t in ("relief", "triangles"):
+    assert '<section class="gallery-row" id="g-%s">' % t in gallery, t
+assert '<details class="gallery-row" id="g-conformance">' in gallery, "conformance folded"
+relief = gallery[gallery.index('id="g-relief"'):]
 relief = relief[:relief.index("</section>")]
 num = r'<td class="num">([0-9.e+-]+)</td>'
 row = re.search(r'<td>Relief mapping</td><td><a href="#s-relief-mapping">relief-mapping</a></td>' + num +
@@ -226,12 +233,30 @@ row = re.search(r'<td>Relief mapping</td><td><a href="#s-relief-mapping">relief-
 assert row, "relief's row beside Table 1"
 paper_fps, gl_fps, cpu_fps, ratio = map(float, row.groups())
 assert paper_fps == 33 and gl_fps > 0 and cpu_fps > 0 and abs(cpu_fps / gl_fps - ratio) <= 0.01 * ratio, row.groups()
-assert relief.count('class="chart"') == 4 and "undominated" in relief, "relief's four sweep charts"
-assert "No published frame rate" in tech[tech.index('id="t-triangles"'):], "triangles: no paper, and the page says so"
+g_tri = gallery[gallery.index('id="g-triangles"'):]
+assert "No published frame rate" in g_tri[:g_tri.index("</section>")], "triangles: no paper, and the page says so"
+# Each technique's part: its cost table and its sweep's charts.
+tech = dom[dom.index('id="techniques"'):dom.index('id="scenes"')]
+for t in ("relief", "triangles", "conformance"):
+    assert 'id="t-%s"' % t in tech, t
+t_relief = tech[tech.index('id="t-relief"'):]
+t_relief = t_relief[:t_relief.index("</section>")]
+assert t_relief.count('class="chart"') == 4 and "undominated" in t_relief, "relief's four sweep charts"
 junit = ET.parse(sys.argv[3]).getroot()
 assert junit.get("failures") == "0" and int(junit.get("tests")) >= len(rows)
 print("ok   report page: %d scenes, %d of %d images loaded, no console message" % (len(rows), loaded, total))
 PY
+    # The folder keeps PNGs, and EXRs only of failing scenes (none here) unless
+    # --exr; summary.md keeps the Markdown tables stdout had.
+    ! ls "$work"/rp/*.exr >/dev/null 2>&1 || fail "a passing report kept EXR files: $(ls "$work"/rp/*.exr | head -3)"
+    cmp -s <(grep -v "made by" "$work/rp/summary.md") <(grep -v "made by" "$work/rp.md") || fail "summary.md is not what stdout printed"
+    "$bin" report triangles-basic --frames 0 --exr --out "$work/rp-exr" >/dev/null
+    [ -f "$work/rp-exr/triangles-basic.cpu.exr" ] && [ -f "$work/rp-exr/triangles-basic.gl.exr" ] || fail "--exr kept no EXR"
+    "$bin" report triangles-basic relief-mapping --frames 1 --brief --out "$work/rp-brief" >"$work/brief.txt"
+    [ "$(wc -l <"$work/brief.txt")" -le 10 ] || fail "--brief printed $(wc -l <"$work/brief.txt") lines"
+    grep -q "^report: 2 scenes, 2 pass, 0 fail$" "$work/brief.txt" && grep -q "^slowest against llvmpipe: " "$work/brief.txt" &&
+      grep -q "^report: $work/rp-brief/index.html" "$work/brief.txt" || { cat "$work/brief.txt"; fail "--brief"; }
+    echo "ok   report folder: no EXR of passing scenes (--exr keeps them), summary.md, --brief in $(wc -l <"$work/brief.txt") lines"
     ;;
   provenance)
     # Every file a command writes records the versions and CPU flags that

@@ -1,6 +1,6 @@
 // report_page.cpp: see report_page.h. Plain HTML, one inline style sheet
 // and one inline script (the wipe and flip); no network, no library.
-#include "app/report_page.h"
+#include "app/report/report_page.h"
 
 #include <algorithm>
 #include <cmath>
@@ -42,11 +42,25 @@ img{image-rendering:pixelated;border:1px solid #888;display:block}
 .controls{font-size:.85em;margin:.3em 0} pre{background:#f6f6f6;padding:.4em;overflow-x:auto}
 .legend{font-size:.85em;color:#444}
 figure.chart{max-width:480px} figure.chart img{image-rendering:auto}
+.gallery-row h2{font-size:1.15em;margin:.8em 0 .3em;display:inline-block} .gallery-row .meta{font-weight:normal}
+.row{display:flex;flex-wrap:wrap;gap:16px;align-items:flex-start} .beside{flex:1 1 420px;min-width:320px}
+.thumbs{display:flex;flex-wrap:wrap;gap:6px;flex:0 1 auto;max-width:880px}
+a.thumb{display:block;width:100px;text-decoration:none;color:#333;font-size:.7em;overflow:hidden;white-space:nowrap;
+ text-overflow:ellipsis;border:2px solid transparent;padding:1px} a.thumb img{border:1px solid #888;margin:0 auto}
+a.thumb.failed{border-color:#c00;background:#fff0f0}
 )css";
 
 // The wipe shows the CPU image left of the slider and llvmpipe's right of
 // it; flip swaps the whole image while the button is held or on each click.
 const char* kScript = R"js(
+// A link to a scene (the gallery's thumbnails, the summary's names) opens
+// its folded detail.
+function openFromHash() {
+  var target = document.getElementById(decodeURIComponent(location.hash.slice(1)));
+  if (target && target.tagName === 'DETAILS' && !target.open) { target.open = true; target.scrollIntoView(); }
+}
+window.addEventListener('hashchange', openFromHash);
+openFromHash();
 function setWipe(viewer, value) {
   viewer.querySelector('.top').style.clipPath = 'inset(0 ' + (100 - value) + '% 0 0)';
 }
@@ -114,17 +128,17 @@ std::string fps_ratio(const ReportEntry& e) {
 }  // namespace
 
 std::string report_page(const ReportHeader& header, const std::vector<ReportEntry>& entries,
-                        const std::string& techniques) {
+                        const std::string& techniques, const std::string& gallery) {
     const long failed = std::count_if(entries.begin(), entries.end(), [](auto& e) { return !e.comparison.pass(); });
     std::ostringstream h;
     h << "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>shadertwin report</title><style>"
       << kStyle << "</style></head><body>\n<h1>shadertwin report</h1><p class=\"meta\">" << markup_text(header.provenance)
       << "</p>\n<p id=\"counts\" data-scenes=\"" << entries.size() << "\" data-failed=\"" << failed << "\">"
       << entries.size() - size_t(failed) << " of " << entries.size() << " scenes pass"
-      << (failed ? ", " + std::to_string(failed) + " fail" : std::string()) << ".</p>\n";
+      << (failed ? ", " + std::to_string(failed) + " fail" : std::string()) << ".</p>\n" << gallery;
 
     // The summary: one row per scene, failures first.
-    h << "<table id=\"summary\"><tr><th>scene</th><th>technique</th><th>result</th><th>identical (float)</th>"
+    h << "<h2 id=\"results\">Every scene</h2><table id=\"summary\"><tr><th>scene</th><th>technique</th><th>result</th><th>identical (float)</th>"
          "<th>identical (8-bit)</th><th>largest difference (8-bit LSB)</th><th>largest relative difference (float)</th>"
          "<th>fps, CPU / llvmpipe</th></tr>\n";
     for (const ReportEntry& e : entries) {
@@ -154,7 +168,8 @@ std::string report_page(const ReportHeader& header, const std::vector<ReportEntr
         viewer(h, c.cpu_png, c.gl_png, w, ht, scale);
         h << "<div class=\"strip\">";
         image_figure(h, c.cpu_png, "CPU (twins)", w, ht, scale);
-        image_figure(h, c.gl_png, "llvmpipe (GLSL)", w, ht, scale);
+        image_figure(h, c.gl_png, c.gl_png == c.cpu_png ? "llvmpipe (GLSL): the CPU's image to the bit" : "llvmpipe (GLSL)",
+                     w, ht, scale);
         image_figure(h, c.diff_png, "heat map", w, ht, scale);
         image_figure(h, c.coverage_diff_png, "coverage map", w, ht, scale);
         if (!c.condition_png.empty()) image_figure(h, c.condition_png, "condition map", w, ht, scale);
@@ -168,7 +183,8 @@ std::string report_page(const ReportHeader& header, const std::vector<ReportEntr
             viewer(h, o.cpu_png, o.gl_png, o.metrics.width, o.metrics.height, os);
             h << "<div class=\"strip\">";
             image_figure(h, o.cpu_png, "CPU", o.metrics.width, o.metrics.height, os);
-            image_figure(h, o.gl_png, "llvmpipe", o.metrics.width, o.metrics.height, os);
+            image_figure(h, o.gl_png, o.gl_png == o.cpu_png ? "llvmpipe: the CPU's image to the bit" : "llvmpipe",
+                         o.metrics.width, o.metrics.height, os);
             image_figure(h, o.diff_png, "heat map", o.metrics.width, o.metrics.height, os);
             h << "</div><table class=\"metrics\"><tr><th>identical (float)</th><th>largest difference (8-bit LSB)</th>"
                  "<th>largest relative difference (float)</th></tr><tr><td class=\"num\">"

@@ -1,5 +1,6 @@
 // report_page.h: the HTML page of `report` (index.html), one folder that
-// works offline: a summary table first (failures first), each scene's
+// works offline: the gallery first (report_gallery.h), then a summary table
+// (failures first), each scene's
 // detail folded under it with the CPU and llvmpipe images, heat map and
 // condition map at a size that shows pixels, a wipe and flip between CPU and
 // llvmpipe, real tables of metrics and costs, and the commands that
@@ -30,9 +31,10 @@ struct ReportHeader {
     int frames = 0;         // timed frames per backend, 0: none
 };
 
-// `entries` in the order shown: failures first. `techniques`: the
-// per-technique section (report_techniques.h), placed after the summary.
+// `entries` in the order shown: failures first. `gallery`: the thumbnails
+// (report_gallery.h), placed first; `techniques`: the per-technique section
+// (report_techniques.h), placed after the summary.
 std::string report_page(const ReportHeader& header, const std::vector<ReportEntry>& entries,
-                        const std::string& techniques = "");
+                        const std::string& techniques = "", const std::string& gallery = "");
 
 }  // namespace st

@@ -1,5 +1,5 @@
 // report_techniques.cpp: see report_techniques.h.
-#include "app/report_techniques.h"
+#include "app/report/report_techniques.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -45,7 +45,7 @@ std::vector<std::string> techniques_in_order(const std::vector<ReportEntry>& ent
 }
 
 // Our rates beside the paper's, in the paper's words and on its hardware.
-void paper_table(std::ostringstream& h, const std::vector<const ReportEntry*>& rows) {
+void write_paper_table(std::ostringstream& h, const std::vector<const ReportEntry*>& rows) {
     std::vector<const ReportEntry*> with_paper;
     for (const ReportEntry* e : rows)
         if (e->paper) with_paper.push_back(e);
@@ -103,6 +103,12 @@ void cost_table(std::ostringstream& h, const std::vector<const ReportEntry*>& ro
 
 }  // namespace
 
+std::string paper_table(const std::vector<const ReportEntry*>& rows) {
+    std::ostringstream h;
+    write_paper_table(h, rows);
+    return h.str();
+}
+
 std::vector<SweepChart> copy_sweep_charts(const std::vector<std::string>& techniques, const std::string& out_dir) {
     std::vector<SweepChart> charts;
     const auto dirs = sweep_chart_dirs();
@@ -146,7 +152,6 @@ std::string technique_section(const std::vector<ReportEntry>& entries, const std
         std::sort(rows.begin(), rows.end(), [](auto* a, auto* b) { return a->scene < b->scene; });
         h << "<section class=\"technique\" id=\"t-" << markup_text(technique) << "\"><h3>" << markup_text(technique)
           << " (" << rows.size() << (rows.size() == 1 ? " scene" : " scenes") << ")</h3>";
-        paper_table(h, rows);
         cost_table(h, rows);
         h << "<div class=\"strip\">";
         for (const SweepChart& c : charts)
