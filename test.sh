@@ -5,9 +5,9 @@
 # scene, for `ctest -L <technique>` and sharding) repeat what
 # cli.compare_builtin and cli.golden check in one process each, and would
 # add minutes here; cli.ctest_labels runs one technique's of them. Label
-# `long` (cli.lane_widths: two more builds, four minutes) runs in CI's
-# sanitizer check, scripts/check-asan.sh, which runs every test but the
-# per-scene ones; `ctest --test-dir build -L long` runs it here.
+# `long` (cli.lane_widths: two more builds, four minutes; sdk.lto: a user's
+# tool linked with LTO) runs in CI right after this script (.ci/run);
+# `ctest --test-dir build -L long` runs it here.
 set -euo pipefail
 cd "$(dirname "$0")"
 ./scripts/install-deps.sh

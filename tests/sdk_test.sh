@@ -34,8 +34,8 @@ cp -r "$src/examples/wrap_lighting" "$project"
 rm -rf "$project/build"
 cp -r "$src/tests/sdk/broken" "$project/broken"
 echo 'add_subdirectory(broken)' >>"$project/CMakeLists.txt"
-# Without LTO first (the edit loop's build: the libraries' fat objects link
-# as plain code); the LTO build of the same tool is checked against it below.
+# Without LTO (the edit loop's build: the libraries' fat objects link as
+# plain code); tests/sdk_lto_test.sh checks the LTO build gives the same bits.
 configure() { cmake -S "$1" -B "$2" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Release "${@:3}"; }
 configure "$project" "$project/build" -DSHADERTWIN_LTO=OFF >"$work/configure.log" 2>&1 ||
   { cat "$work/configure.log"; fail "configure the example"; }
@@ -132,23 +132,6 @@ rm "$project/broken/scenes/broken-kind.json"
 mv "$project/broken/broken.frag" "$work/broken.frag"
 expect_refused "a GLSL file gone since the build" "technique broken: no GLSL file" "$broken" compare broken-scene
 mv "$work/broken.frag" "$project/broken/broken.frag"
-
-# The same tool with LTO (SHADERTWIN_LTO=ON, a Release build's default):
-# the same bits as the plain link's (issue 25), and the golden file (made by
-# an LTO build) agrees with both.
-configure "$project" "$project/build-lto" >"$work/configure-lto.log" 2>&1 || { cat "$work/configure-lto.log"; fail "configure with LTO"; }
-grep -q -- "-flto" "$project/build-lto/CMakeFiles/wraptwin.dir/link.txt" || fail "a Release build did not link with LTO"
-! grep -q -- " -flto" "$project/build/CMakeFiles/wraptwin.dir/link.txt" || fail "SHADERTWIN_LTO=OFF linked with LTO"
-start=$(date +%s)
-cmake --build "$project/build-lto" -j 2 --target wraptwin >"$work/build-lto.log" 2>&1 || { tail -40 "$work/build-lto.log"; fail "build with LTO"; }
-lto_seconds=$(( $(date +%s) - start ))
-for scene in wrap-sphere-front wrap-sphere-back; do
-  plain=$("$tool" render "$scene" --backend cpu --out "$work/plain" | python3 -c 'import json,sys; print(json.load(sys.stdin)["hash"])')
-  lto=$("$project/build-lto/wraptwin" render "$scene" --backend cpu --out "$work/lto" | python3 -c 'import json,sys; print(json.load(sys.stdin)["hash"])')
-  [ "$plain" = "$lto" ] || fail "$scene: $plain without LTO, $lto with"
-done
-"$project/build-lto/wraptwin" golden check wrap-sphere-front wrap-sphere-back >"$work/golden-lto.txt" || { cat "$work/golden-lto.txt"; fail "golden check with LTO"; }
-echo "ok   with LTO (built in $lto_seconds s): the same hashes as without, and the golden file's"
 
 # Refused by CMake when the project is configured.
 expect_configure_error() {
