@@ -17,6 +17,9 @@ install(TARGETS ${_st_libraries} EXPORT shadertwinTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadertwin)
 install(TARGETS shadertwin RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The image module (image/image_library.h): bin/shadertwin finds it in
+# ../lib, a user's tool on the run path shadertwin::image gives it.
+install(TARGETS shadertwin_oiio LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 
 # Headers keep the source tree's folders, so "shading/program.h" resolves
 # from include/shadertwin as it does from the source root.

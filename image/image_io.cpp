@@ -1,4 +1,5 @@
-// image_io.cpp: OpenImageIO readers and writers, with temp-and-rename.
+// image_io.cpp: image readers and writers (OpenImageIO, through
+// image_library.h), with temp-and-rename.
 #include "image/image_io.h"
 
 #include <cstdio>
@@ -7,10 +8,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
 #include "image/file_provenance.h"
+#include "image/image_library.h"
 #include "image/png_structure.h"
 #include "image/stderr_capture.h"
 #include "image/unorm8.h"
@@ -38,15 +39,11 @@ void commit(const std::string& tmp, const std::string& path) {
     }
 }
 
-void write_with_oiio(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc type,
-                     const void* data) {
+void write_through_library(const std::string& path, int width, int height, int channels, bool floats,
+                           const void* pixels, const std::map<std::string, std::string>& attributes) {
     const std::string tmp = temp_name(path);
-    auto out = OIIO::ImageOutput::create(tmp);
-    if (!out) throw std::runtime_error("cannot write " + path + ": " + OIIO::geterror());
-    bool ok = out->open(tmp, spec) && out->write_image(type, data);
-    ok = out->close() && ok;
-    if (!ok) {
-        std::string err = out->geterror();
+    const std::string err = image_library().write(tmp, width, height, channels, floats, pixels, attributes);
+    if (!err.empty()) {
         std::error_code ec;
         fs::remove(tmp, ec);
         throw std::runtime_error("cannot write " + path + ": " + err);
@@ -54,14 +51,19 @@ void write_with_oiio(const std::string& path, const OIIO::ImageSpec& spec, OIIO:
     commit(tmp, path);
 }
 
+std::map<std::string, std::string> provenance_attributes() {
+    std::map<std::string, std::string> out;
+    for (const auto& [key, value] : file_provenance().attributes) out["shadertwin:" + key] = value;
+    return out;
+}
+
 }  // namespace
 
 void write_exr(const std::string& path, const Image& image, const Metadata& metadata) {
-    OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
-    spec.attribute("compression", "zip");
-    for (const auto& [key, value] : file_provenance().attributes) spec.attribute("shadertwin:" + key, value);
-    for (const auto& [key, value] : metadata) spec.attribute("shadertwin:" + key, value);
-    write_with_oiio(path, spec, OIIO::TypeDesc::FLOAT, image.rgba.data());
+    std::map<std::string, std::string> attributes = provenance_attributes();
+    for (const auto& [key, value] : metadata) attributes["shadertwin:" + key] = value;
+    attributes["compression"] = "zip";
+    write_through_library(path, image.width, image.height, 4, true, image.rgba.data(), attributes);
 }
 
 void write_png(const std::string& path, const Image& image) {
@@ -72,9 +74,7 @@ void write_png(const std::string& path, const Image& image) {
 
 void write_png_bytes(const std::string& path, int width, int height, int channels,
                      const unsigned char* bytes) {
-    OIIO::ImageSpec spec(width, height, channels, OIIO::TypeDesc::UINT8);
-    for (const auto& [key, value] : file_provenance().attributes) spec.attribute("shadertwin:" + key, value);
-    write_with_oiio(path, spec, OIIO::TypeDesc::UINT8, bytes);
+    write_through_library(path, width, height, channels, false, bytes, provenance_attributes());
 }
 
 Image read_image(const std::string& path, Metadata* metadata) {
@@ -88,32 +88,13 @@ Image read_image(const std::string& path, Metadata* metadata) {
         return std::runtime_error("cannot read " + path + ": " + line);
     };
     if (const std::string broken = png_structure_error(path); !broken.empty()) throw refuse(broken);
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw refuse(OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.nchannels < 1) throw std::runtime_error("cannot read " + path + ": no channels");
-    // The header's size is checked before anything is allocated for it: a
-    // corrupt or hostile header may claim gigabytes.
-    if (spec.width < 1 || spec.height < 1 || spec.width > kMaxImageSide || spec.height > kMaxImageSide ||
-        spec.nchannels > 64 || spec.depth > 1)
-        throw std::runtime_error("cannot read " + path + ": its header says " + std::to_string(spec.width) + "x" +
-                                 std::to_string(spec.height) + "x" + std::to_string(spec.depth) + " with " +
-                                 std::to_string(spec.nchannels) + " channels; images up to " +
-                                 std::to_string(kMaxImageSide) + " pixels a side and 64 channels are read");
-    Image image(spec.width, spec.height);
-    std::vector<float> raw(size_t(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, raw.data())) throw refuse(in->geterror());
-    for (size_t p = 0; p < size_t(spec.width) * spec.height; ++p)
-        for (int c = 0; c < 4; ++c)
-            image.rgba[p * 4 + c] = c < spec.nchannels ? raw[p * spec.nchannels + c]
-                                                       : (c == 3 ? 1.0f : 0.0f);
-    if (metadata) {
-        for (const auto& attr : spec.extra_attribs) {
-            std::string name = attr.name().string();
-            if (name.rfind("shadertwin:", 0) == 0) (*metadata)[name.substr(11)] = attr.get_string();
-        }
-    }
-    in->close();
+    Image image;
+    std::map<std::string, std::string> attributes;
+    std::string error;
+    if (!image_library().read(path, kMaxImageSide, image.width, image.height, image.rgba, attributes, error))
+        throw refuse(error);
+    if (metadata)
+        for (const auto& [name, value] : attributes) (*metadata)[name.substr(11)] = value;  // without "shadertwin:"
     return image;
 }
 

@@ -20,9 +20,25 @@ expect_bad_input() { local what="$1"; shift; expect_refused "$what" "" "$@"; }
 
 case "$case_name" in
   compare_builtin)
-    # Every built-in scene meets its criteria (strict default unless stated).
-    "$bin" compare $(all_scenes) --json --out "$work" >"$work/out.jsonl" || {
+    # Every built-in scene meets its criteria (strict default unless stated),
+    # with the GL reference through OSMesa; then through EGL, whose images
+    # must hash the same (gl/gl_context.h; both platforms are installed by
+    # scripts/install-deps.sh, so a missing one is a failure). One test for
+    # both, so that each scene's OSMesa image is rendered once.
+    "$bin" compare $(all_scenes) --gl osmesa --json --out "$work" >"$work/out.jsonl" || {
       cat "$work/out.jsonl"; fail "compare reported a failing scene"; }
+    "$bin" render $(all_scenes) --backend gl --gl egl --out "$work/egl" >"$work/egl.jsonl"
+    python3 - "$work/out.jsonl" "$work/egl.jsonl" <<'PY' || fail "OSMesa and EGL images differ"
+import json, sys
+osmesa, egl = ([json.loads(l) for l in open(f)] for f in sys.argv[1:])
+assert [j["gl_platform"] for j in egl] == ["egl"] * len(egl)
+a = [(j["scene"], j["gl_hash"], [(o["name"], o["gl_hash"]) for o in j["outputs"]]) for j in osmesa]
+b = [(j["scene"], j["hash"], [(o["name"], o["hash"]) for o in j["outputs"]]) for j in egl]
+assert len(a) == len(b) and len(a) > 0
+bad = [x[0] for x, y in zip(a, b) if x != y]
+assert not bad, "differ: " + " ".join(bad)
+print("ok   %d scenes and %d named outputs hash the same on OSMesa and EGL" % (len(a), sum(len(x[2]) for x in a)))
+PY
     [ "$(wc -l <"$work/out.jsonl")" -eq "$(all_scenes | wc -l)" ] || fail "one line per scene expected"
     for key in scene pass coverage_mismatch identical_fraction_8bit max_diff_8bit \
                identical_fraction_float max_rel_diff_float; do
@@ -59,30 +75,16 @@ PY
 
   gl_platforms)
     # The GL reference through OSMesa and through EGL (gl/gl_context.h):
-    # every built-in scene's GL image and every named output hash the same on
-    # both, and each run says which platform drew it. Both platforms are
-    # installed by scripts/install-deps.sh, so a missing one is a failure.
+    # each says it is llvmpipe and which platform drew an image (that every
+    # scene hashes the same on both is checked by cli.compare_builtin).
     for p in osmesa egl; do
       SHADERTWIN_GL=$p "$bin" --version >"$work/version.$p" || fail "GL platform $p unavailable"
       grep -qx "gl_platform $p" "$work/version.$p" || fail "--version under SHADERTWIN_GL=$p: $(cat "$work/version.$p")"
-      "$bin" render $(all_scenes) --backend gl --gl $p --out "$work/$p" >"$work/$p.jsonl"
+      "$bin" render thin-slab-fragment-backlit relief-bloom --backend gl --gl $p --out "$work/$p" >"$work/$p.jsonl"
+      [ "$(grep -c "\"gl_platform\":\"$p\"" "$work/$p.jsonl")" -eq 2 ] || fail "render --gl $p: $(cat "$work/$p.jsonl")"
     done
     diff <(grep ^gl_renderer "$work/version.osmesa") <(grep ^gl_renderer "$work/version.egl") ||
       fail "the platforms report different renderers"
-    python3 - "$work/osmesa.jsonl" "$work/egl.jsonl" <<'PY' || fail "OSMesa and EGL images differ"
-import json, sys
-runs = [[json.loads(l) for l in open(f)] for f in sys.argv[1:]]
-assert [j["gl_platform"] for j in runs[0]] == ["osmesa"] * len(runs[0])
-assert [j["gl_platform"] for j in runs[1]] == ["egl"] * len(runs[1])
-def hashes(run):
-    return [(j["scene"], j["hash"], [(o["name"], o["hash"]) for o in j["outputs"]]) for j in run]
-a, b = hashes(runs[0]), hashes(runs[1])
-assert len(a) == len(b) and len(a) > 0
-bad = [x[0] for x, y in zip(a, b) if x != y]
-assert not bad, "differ: " + " ".join(bad)
-print("ok   %d scenes and %d named outputs hash the same on OSMesa and EGL"
-      % (len(a), sum(len(x[2]) for x in a)))
-PY
     # Precedence: --gl over SHADERTWIN_GL over auto; auto takes OSMesa here.
     SHADERTWIN_GL=egl "$bin" render thin-slab-fragment-backlit --backend gl --gl osmesa --out "$work/p" |
       grep -q '"gl_platform":"osmesa"' || fail "--gl does not override SHADERTWIN_GL"
@@ -275,17 +277,10 @@ PY
     flags=$(echo "$version" | sed -n 's/^cpu_flags //p')
     mesa=$(echo "$version" | sed -n 's/^mesa //p')
     n=0
+    images=()
     while IFS= read -r f; do
       case "$f" in
-        *.png|*.exr)
-          info=$(oiiotool --info -v "$f")
-          for want in "shadertwin:version: \"$(echo "$version" | sed -n 's/^shadertwin //p')\"" \
-                      "shadertwin:commit: \"$commit\"" "shadertwin:cpu_flags: \"$flags\"" \
-                      "shadertwin:compiler: " "shadertwin:lanes: "; do
-            # No pipe (see gl_platforms); on a failure, all the file says, so
-            # that the cause shows in the log.
-            grep -qF "$want" <<<"$info" || { echo "$info" >&2; fail "$f does not record $want"; }
-          done ;;
+        *.png|*.exr) images+=("$f") ;;
         *.csv) head -1 "$f" | grep -q "^# made by: shadertwin .*($commit).*CPU flags $flags" || fail "$f: first line $(head -1 "$f")" ;;
         *.svg|*.md|*.html|*.xml) grep -q "<!-- made by: shadertwin .*($commit).*CPU flags $flags.* -->" "$f" || fail "$f records nothing" ;;
         *.json) continue ;;
@@ -293,6 +288,21 @@ PY
       esac
       n=$((n + 1))
     done < <(find "$work/c" -type f ! -path '*/charts/*')
+    # Every image's attributes from one oiiotool run (each run loads
+    # OpenImageIO's libraries: a third of a second), split at its "Reading"
+    # lines; on a failure, all the file says, so that the cause shows.
+    oiiotool --info -v "${images[@]}" >"$work/images.info"
+    python3 - "$work/images.info" "${#images[@]}" "$(echo "$version" | sed -n 's/^shadertwin //p')" "$commit" "$flags" <<'PY' ||
+import sys
+text, count, version, commit, flags = open(sys.argv[1]).read(), int(sys.argv[2]), *sys.argv[3:]
+blocks = [b for b in text.split("Reading ")[1:]]
+assert len(blocks) == count, (len(blocks), count)
+for b in blocks:
+    for want in ('shadertwin:version: "%s"' % version, 'shadertwin:commit: "%s"' % commit,
+                 'shadertwin:cpu_flags: "%s"' % flags, "shadertwin:compiler: ", "shadertwin:lanes: "):
+        assert want in b, "%s does not record %s:\n%s" % (b.split("\n")[0], want, b)
+PY
+      fail "an image does not record its provenance"
     ls "$work"/c/report/charts/*.svg >/dev/null || fail "the report copied no charts"
     # Files written after the GL reference ran name its Mesa; a CPU-only command's do not.
     grep -q "Mesa $mesa" "$work/c/junit.xml" || fail "JUnit: no Mesa version"
