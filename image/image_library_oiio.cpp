@@ -17,6 +17,10 @@ public:
         const OIIO::TypeDesc type = floats ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
         OIIO::ImageSpec spec(width, height, channels, type);
         for (const auto& [key, value] : attributes) spec.attribute(key, value);
+        // zlib's fastest level: an 800x600 PNG in 61 ms instead of the
+        // default level's 293, for 17 % more bytes; a compare writes up to
+        // five PNGs a scene, and deflate was a third of its time.
+        spec.attribute("png:compressionLevel", 1);
         auto out = OIIO::ImageOutput::create(path);
         if (!out) return OIIO::geterror();
         bool ok = out->open(path, spec) && out->write_image(type, pixels);
