@@ -1,5 +1,6 @@
-# lib.sh: what the command-line test scripts share (sourced, after they set
-# `work` to their scratch folder).
+# lib.sh: what the command-line and sdk test scripts share (sourced; the
+# expect_* helpers write into `work`, the scratch folder the script, or
+# sdk_setup, makes).
 
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
@@ -34,4 +35,17 @@ expect_refused_without_out() {
   [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "$what: stderr is not one line: $(cat "$work/stderr")"
   grep -q -- "$expected" "$work/stderr" || fail "$what: '$(cat "$work/stderr")' does not say '$expected'"
   echo "ok   $what: $(cat "$work/stderr")"
+}
+
+# sdk_setup SOURCE_DIR BUILD_DIR CXX_COMPILER (the sdk tests' arguments):
+# sets src, build and cxx; makes the scratch folder `work`, removed at exit;
+# installs this build into `prefix` ($work/prefix), as a user's would be.
+sdk_setup() {
+  src="$1"
+  build="$2"
+  cxx="$3"
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+  prefix="$work/prefix"
+  cmake --install "$build" --prefix "$prefix" >"$work/install.log" || { cat "$work/install.log"; fail "install"; }
 }

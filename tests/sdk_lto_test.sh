@@ -8,15 +8,9 @@
 # ./test.sh (.ci/run).
 # Usage: sdk_lto_test.sh SOURCE_DIR BUILD_DIR CXX_COMPILER
 set -euo pipefail
-src="$1"
-build="$2"
-cxx="$3"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 source "$(dirname "$0")/lib.sh"
+sdk_setup "$@"
 
-prefix="$work/prefix"
-cmake --install "$build" --prefix "$prefix" >"$work/install.log" || { cat "$work/install.log"; fail "install"; }
 grep -q "set(shadertwin_LTO ON)" "$prefix/lib/cmake/shadertwin/shadertwinConfig.cmake" ||
   { echo "ok   skipped: this build's libraries hold no LTO objects (a sanitizer build)"; exit 0; }
 project="$work/project"

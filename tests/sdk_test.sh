@@ -7,16 +7,10 @@
 # line and exit code 2.
 # Usage: sdk_test.sh SOURCE_DIR BUILD_DIR CXX_COMPILER
 set -euo pipefail
-src="$1"
-build="$2"
-cxx="$3"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 source "$(dirname "$0")/lib.sh"
+sdk_setup "$@"
 
-prefix="$work/prefix"
-cmake --install "$build" --prefix "$prefix" >"$work/install.log" || { cat "$work/install.log"; fail "install"; }
-for f in bin/shadertwin lib/cmake/shadertwin/shadertwinConfig.cmake include/shadertwin/sdk/technique.h \
+for f in bin/shadertwin lib/libshadertwin_oiio.so lib/cmake/shadertwin/shadertwinConfig.cmake include/shadertwin/sdk/technique.h \
          share/shadertwin/golden/hashes.json share/shadertwin/tool_main.cpp; do
   [ -e "$prefix/$f" ] || fail "the install has no $f"
 done

@@ -6,14 +6,9 @@
 # appear in what the sh block before it printed.
 # Usage: tutorial_test.sh SOURCE_DIR BUILD_DIR CXX_COMPILER
 set -euo pipefail
-src="$1"
-build="$2"
-cxx="$3"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 source "$(dirname "$0")/lib.sh"
+sdk_setup "$@"
 
-cmake --install "$build" --prefix "$work/prefix" >"$work/install.log" || { cat "$work/install.log"; fail "install"; }
 export SHADERTWIN_PREFIX="$work/prefix"
 # The page's cmake commands take the compiler the libraries were built with.
 export CXX="$cxx"
