@@ -69,10 +69,7 @@ int cmd_report(const std::vector<std::string>& patterns, const ReportOptions& op
                                   (frames > 0 ? "; " + std::to_string(frames) + " timed frames per backend, interleaved"
                                               : std::string()),
                               out_dir, frames};
-    std::vector<std::string> techniques;
-    for (const ReportEntry& e : entries)
-        if (std::find(techniques.begin(), techniques.end(), e.kind) == techniques.end()) techniques.push_back(e.kind);
-    const std::vector<SweepChart> charts = copy_sweep_charts(techniques, out_dir);
+    const std::vector<SweepChart> charts = copy_sweep_charts(techniques_in_order(entries), out_dir);
     write_text_file(out_dir + "/index.html",
                     report_page(header, entries, technique_section(entries, charts), report_gallery(entries)));
     const std::string markdown = report_markdown(entries, renderer, frames);

@@ -8,12 +8,24 @@
 
 namespace st {
 
+namespace {
+
+std::string rendered_stem(const std::string& dir, const std::string& scene, Backend backend) {
+    return dir + "/" + scene + "." + backend_name(backend);
+}
+
+void write_rendered_exr(const std::string& dir, const std::string& scene, Backend backend, const Image& image,
+                        Backends& backends) {
+    write_exr(rendered_stem(dir, scene, backend) + ".exr", image, backends.provenance(backend));
+}
+
+}  // namespace
+
 std::string write_rendered(const std::string& dir, const std::string& scene, Backend backend,
                            const Image& image, Backends& backends, bool exr) {
-    const std::string stem = scene + "." + backend_name(backend);
-    if (exr) write_exr(dir + "/" + stem + ".exr", image, backends.provenance(backend));
-    write_png(dir + "/" + stem + ".png", image);
-    return stem + ".png";
+    if (exr) write_rendered_exr(dir, scene, backend, image, backends);
+    write_png(rendered_stem(dir, scene, backend) + ".png", image);
+    return scene + "." + backend_name(backend) + ".png";
 }
 
 namespace {
@@ -99,14 +111,12 @@ SceneComparison compare_scene(const Scene& scene, Backends& backends, const std:
     }
     // The float images last, once the verdict is known.
     if (files.every_exr || !c.pass()) {
-        auto write = [&](const std::string& stem, Backend backend, const Image& image) {
-            write_exr(out_dir + "/" + stem + "." + backend_name(backend) + ".exr", image, backends.provenance(backend));
-        };
-        write(scene.name, Backend::Cpu, cpu.image);
-        write(scene.name, Backend::Gl, gl.image);
+        write_rendered_exr(out_dir, scene.name, Backend::Cpu, cpu.image, backends);
+        write_rendered_exr(out_dir, scene.name, Backend::Gl, gl.image, backends);
         for (size_t i = 0; i < cpu.outputs.size(); ++i) {
-            write(scene.name + "." + cpu.outputs[i].name, Backend::Cpu, cpu.outputs[i].image);
-            write(scene.name + "." + gl.outputs[i].name, Backend::Gl, gl.outputs[i].image);
+            const std::string stem = scene.name + "." + cpu.outputs[i].name;
+            write_rendered_exr(out_dir, stem, Backend::Cpu, cpu.outputs[i].image, backends);
+            write_rendered_exr(out_dir, stem, Backend::Gl, gl.outputs[i].image, backends);
         }
     }
     return c;

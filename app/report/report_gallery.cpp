@@ -30,9 +30,7 @@ void thumbnail(std::ostringstream& h, const ReportEntry& e) {
 }  // namespace
 
 std::string report_gallery(const std::vector<ReportEntry>& entries) {
-    std::vector<std::string> kinds;
-    for (const ReportEntry& e : entries)
-        if (std::find(kinds.begin(), kinds.end(), e.kind) == kinds.end()) kinds.push_back(e.kind);
+    std::vector<std::string> kinds = techniques_in_order(entries);
     // Techniques first, the conformance scenes last.
     std::stable_partition(kinds.begin(), kinds.end(), [](const std::string& k) { return k != "conformance"; });
     std::ostringstream h;

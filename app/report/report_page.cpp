@@ -127,6 +127,13 @@ std::string fps_ratio(const ReportEntry& e) {
 
 }  // namespace
 
+std::vector<std::string> techniques_in_order(const std::vector<ReportEntry>& entries) {
+    std::vector<std::string> out;
+    for (const ReportEntry& e : entries)
+        if (std::find(out.begin(), out.end(), e.kind) == out.end()) out.push_back(e.kind);
+    return out;
+}
+
 std::string report_page(const ReportHeader& header, const std::vector<ReportEntry>& entries,
                         const std::string& techniques, const std::string& gallery) {
     const long failed = std::count_if(entries.begin(), entries.end(), [](auto& e) { return !e.comparison.pass(); });

@@ -31,6 +31,10 @@ struct ReportHeader {
     int frames = 0;         // timed frames per backend, 0: none
 };
 
+// The entries' techniques (scene kinds), each once, in the order the
+// entries first name them.
+std::vector<std::string> techniques_in_order(const std::vector<ReportEntry>& entries);
+
 // `entries` in the order shown: failures first. `gallery`: the thumbnails
 // (report_gallery.h), placed first; `techniques`: the per-technique section
 // (report_techniques.h), placed after the summary.

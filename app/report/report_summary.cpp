@@ -69,9 +69,7 @@ std::string report_brief(const std::vector<ReportEntry>& entries, const std::str
     b << "report: " << entries.size() << " scenes, " << entries.size() - size_t(failed) << " pass, " << failed
       << " fail\n";
     // One line per technique, in the order the scenes name them.
-    std::vector<std::string> kinds;
-    for (const auto& e : entries)
-        if (std::find(kinds.begin(), kinds.end(), e.kind) == kinds.end()) kinds.push_back(e.kind);
+    const std::vector<std::string> kinds = techniques_in_order(entries);
     size_t width = 0;
     for (const auto& k : kinds) width = std::max(width, k.size());
     for (const std::string& kind : kinds) {

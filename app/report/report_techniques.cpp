@@ -37,13 +37,6 @@ std::string svg_title(const std::string& svg) {
 
 std::string number_cell(double v, int digits) { return "<td class=\"num\">" + short_number(v, digits) + "</td>"; }
 
-std::vector<std::string> techniques_in_order(const std::vector<ReportEntry>& entries) {
-    std::vector<std::string> out;
-    for (const ReportEntry& e : entries)
-        if (std::find(out.begin(), out.end(), e.kind) == out.end()) out.push_back(e.kind);
-    return out;
-}
-
 // Our rates beside the paper's, in the paper's words and on its hardware.
 void write_paper_table(std::ostringstream& h, const std::vector<const ReportEntry*>& rows) {
     std::vector<const ReportEntry*> with_paper;
