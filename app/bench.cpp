@@ -5,19 +5,13 @@
 #include <cstdlib>
 #include <functional>
 
+#include "app/median.h"
 #include "gl/gl_renderer.h"
 #include "raster/cpu_renderer.h"
 
 namespace st {
 
 namespace {
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 FrameStats stats(const std::vector<double>& ms) {
     FrameStats s;

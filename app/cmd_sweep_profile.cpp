@@ -24,6 +24,7 @@
 #include <sstream>
 
 #include "app/tool_data.h"
+#include "app/median.h"
 #include "app/memory_budget.h"
 #include "app/backends.h"
 #include "app/commands.h"
@@ -42,7 +43,7 @@ namespace st {
 
 namespace {
 
-struct Setting {
+struct ProfileSetting {
     std::string pattern;
     int samples = 64, texture_size = 256;
     std::string label() const {
@@ -52,27 +53,21 @@ struct Setting {
 
 // The budget: at most this share of the interior pixels more than one 8-bit
 // step from the exact image.
-constexpr double kWithinStep = 0.01;
+constexpr double kInteriorWithinStep = 0.01;
 
 struct RegionError {
     double rms = 0, max = 0, over_1lsb = 0;  // 8-bit steps
     double rel_rms = 0;                      // float: RMS difference over the mean exact value
 };
 
-struct Result {
-    Setting setting;
+struct ProfileResult {
+    ProfileSetting setting;
     std::vector<double> ms;
     double median_ms = 0;
     RegionError interior, edge_band;
     RegionError physics;  // the interior against the exact image of the Monte Carlo profile
     bool undominated = false;
 };
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
-    return v[v.size() / 2];
-}
 
 RegionError region_error(const Image& img, const ProfileExact& exact, uint8_t region) {
     double sq = 0, fsq = 0, fsum = 0, worst = 0;
@@ -101,15 +96,15 @@ RegionError region_error(const Image& img, const ProfileExact& exact, uint8_t re
     return e;
 }
 
-std::vector<Setting> settings() {
-    std::vector<Setting> out;
+std::vector<ProfileSetting> profile_settings() {
+    std::vector<ProfileSetting> out;
     for (const char* pattern : {"importance", "disk"})
         for (int texture_size : {128, 256, 512})
-            for (int samples : {4, 8, 16, 32, 64, 128, 256, 512, 1024}) out.push_back(Setting{pattern, samples, texture_size});
+            for (int samples : {4, 8, 16, 32, 64, 128, 256, 512, 1024}) out.push_back(ProfileSetting{pattern, samples, texture_size});
     return out;
 }
 
-std::vector<std::string> overrides_of(const std::vector<std::string>& common, const Setting& s) {
+std::vector<std::string> overrides_of(const std::vector<std::string>& common, const ProfileSetting& s) {
     std::vector<std::string> o = common;
     o.push_back("gather.pattern=" + s.pattern);
     o.push_back("gather.samples=" + std::to_string(s.samples));
@@ -122,11 +117,11 @@ std::vector<std::string> overrides_of(const std::vector<std::string>& common, co
 
 int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir, int frames,
                       const CommonOptions& common) {
-    const std::vector<Setting> all = settings();
+    const std::vector<ProfileSetting> all = profile_settings();
     // Every setting's scene and the exact image first: bad input stops the
     // sweep before it writes anything.
     std::vector<Scene> scenes;
-    for (const Setting& s : all) scenes.push_back(load_scene(scene_name, overrides_of(common.overrides, s)));
+    for (const ProfileSetting& s : all) scenes.push_back(load_scene(scene_name, overrides_of(common.overrides, s)));
     check_memory(scenes, MemoryUse::Compare, common.max_memory);
     const auto exact_start = std::chrono::steady_clock::now();
     const ProfileExact exact = exact_profile_image(scenes.front());
@@ -143,7 +138,7 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
     if (ec) throw std::runtime_error("cannot create folder " + out_dir + ": " + ec.message());
 
     Backends backends(common.threads, common.gl_platform, glsl_roots());
-    std::vector<Result> results(all.size());
+    std::vector<ProfileResult> results(all.size());
     std::vector<Image> images(all.size());
     Progress progress("sweep profile", all.size() * size_t(std::max(frames, 1)));
     const auto label = [&](size_t i, int round) { return all[i].label() + ", round " + std::to_string(round + 1); };
@@ -165,21 +160,21 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
             results[i].ms.push_back(backends.render(Backend::Cpu, scenes[i].frame).ms);
         }
     bool ok = true;
-    for (Result& r : results) r.median_ms = median(r.ms);
-    for (Result& r : results) {
-        r.undominated = std::none_of(results.begin(), results.end(), [&](const Result& o) {
+    for (ProfileResult& r : results) r.median_ms = median(r.ms);
+    for (ProfileResult& r : results) {
+        r.undominated = std::none_of(results.begin(), results.end(), [&](const ProfileResult& o) {
             return o.median_ms <= r.median_ms && o.interior.rms <= r.interior.rms &&
                    (o.median_ms < r.median_ms || o.interior.rms < r.interior.rms);
         });
         ok &= std::isfinite(r.interior.rms) && std::isfinite(r.edge_band.rms);
     }
-    const Result* cheapest = nullptr;
-    for (const Result& r : results)
-        if (r.interior.over_1lsb <= kWithinStep && (!cheapest || r.median_ms < cheapest->median_ms)) cheapest = &r;
+    const ProfileResult* cheapest = nullptr;
+    for (const ProfileResult& r : results)
+        if (r.interior.over_1lsb <= kInteriorWithinStep && (!cheapest || r.median_ms < cheapest->median_ms)) cheapest = &r;
 
     write_png(out_dir + "/profile-sweep-exact.png", exact.image);
-    const Result* best = &results.front();
-    for (const Result& r : results)
+    const ProfileResult* best = &results.front();
+    for (const ProfileResult& r : results)
         if (r.interior.rms < best->interior.rms) best = &r;
     const Image& best_image = images[size_t(best - results.data())];
     write_png(out_dir + "/profile-sweep-best.png", best_image);
@@ -214,11 +209,11 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
     ChartSeries imp{"importance-sampled", "#1f77b4", {}, {}, false, 2.5}, disk{"uniform disk", "#ff7f0e", {}, {}, false, 2.5},
         front{"undominated", "#d62728", {}, {}, false, 0},
         physics{"importance-sampled, against Monte Carlo", "#2ca02c", {}, {}, false, 2.5};
-    std::vector<const Result*> sorted;
-    for (const Result& r : results) sorted.push_back(&r);
-    std::sort(sorted.begin(), sorted.end(), [](const Result* a, const Result* b) { return a->median_ms < b->median_ms; });
-    for (const Result* r : sorted) {
-        const Setting& s = r->setting;
+    std::vector<const ProfileResult*> sorted;
+    for (const ProfileResult& r : results) sorted.push_back(&r);
+    std::sort(sorted.begin(), sorted.end(), [](const ProfileResult* a, const ProfileResult* b) { return a->median_ms < b->median_ms; });
+    for (const ProfileResult* r : sorted) {
+        const ProfileSetting& s = r->setting;
         ChartSeries& series = s.pattern == "importance" ? imp : disk;
         series.x.push_back(r->median_ms);
         series.y.push_back(std::max(r->interior.rms, 1e-3));

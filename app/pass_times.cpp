@@ -3,14 +3,11 @@
 
 #include <algorithm>
 
+#include "app/median.h"
+
 namespace st {
 
 namespace {
-
-double median(std::vector<double> v) {
-    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
-    return v[v.size() / 2];
-}
 
 // The first n passes, then an empty pass into the frame's image so that
 // both backends have an image to end on (not for the whole frame).

@@ -7,6 +7,7 @@
 #include <mutex>
 #include <sstream>
 
+#include "app/median.h"
 #include "app/tool_data.h"
 #include "app/backends.h"
 #include "app/commands.h"
@@ -33,11 +34,6 @@ constexpr const char* kModels[] = {"dipole", "multipole", "layered", "mc"};
 constexpr double kReferenceReachLengths = 7.0;
 constexpr double kMaxReferenceReachMm = 500.0;
 
-double median(std::vector<double> v) {
-    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
-    return v[v.size() / 2];
-}
-
 // The material's fields that belong to one model only.
 void set_model(nlohmann::json& material, const std::string& model) {
     material["model"] = model;
@@ -46,13 +42,13 @@ void set_model(nlohmann::json& material, const std::string& model) {
     if (model != "multipole") material.erase("max_dipole_pairs");
 }
 
-struct ImageError {
+struct ObjectError {
     double over_budget = 0, p99 = 0, max = 0;
 };
 
 // Per pixel of the object (either image not black), the worst channel's
 // 8-bit difference.
-ImageError image_error(const Image& a, const Image& reference, double budget) {
+ObjectError image_error(const Image& a, const Image& reference, double budget) {
     std::vector<double> d;
     for (size_t p = 0; p + 3 < reference.rgba.size(); p += 4) {
         bool object = false;
@@ -64,7 +60,7 @@ ImageError image_error(const Image& a, const Image& reference, double budget) {
         }
         if (object) d.push_back(worst);
     }
-    ImageError e;
+    ObjectError e;
     if (d.empty()) return e;
     e.over_budget = double(std::count_if(d.begin(), d.end(), [&](double x) { return x > budget; })) / double(d.size());
     std::sort(d.begin(), d.end());
@@ -173,7 +169,7 @@ QualityChoice measure_quality(Backends& backends, const std::string& name, const
             c.build_source = last_build_line(log_before);
             Image image;
             c.frame_ms = timed(scene.frame, &image);
-            const ImageError e = image_error(image, reference, choice.budget);
+            const ObjectError e = image_error(image, reference, choice.budget);
             c.over_budget = e.over_budget, c.p99 = e.p99, c.max = e.max;
             c.within = e.over_budget <= kOverBudgetShare;
             choice.tried.push_back(c);

@@ -22,7 +22,7 @@ struct Vert {
 
 // The perspective-correct value at window point (px, py): screen-space
 // barycentrics weighted by 1/w, renormalised.
-double reference(const Vert v[3], double px, double py, int c) {
+double exact_attribute(const Vert v[3], double px, double py, int c) {
     const double area = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[2].x - v[0].x) * (v[1].y - v[0].y);
     double b[3];
     for (int i = 0; i < 3; ++i) {
@@ -99,7 +99,7 @@ TEST(Interpolation, PerspectiveCorrect) {
             const BlockInputs q = interpolate(v, bx, by);
             for (int lane = 0; lane < kBlockLanes; ++lane)
                 for (int c = 0; c < 4; ++c) {
-                    const double want = reference(v, bx + block_lane_x(lane) + 0.5, by + block_lane_y(lane) + 0.5, c);
+                    const double want = exact_attribute(v, bx + block_lane_x(lane) + 0.5, by + block_lane_y(lane) + 0.5, c);
                     worst = std::max(worst, std::abs(double(q.colour[size_t(lane)][c]) - want));
                 }
         }

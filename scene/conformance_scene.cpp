@@ -19,7 +19,6 @@ namespace st {
 
 namespace {
 
-constexpr double kHuge = 1e30;
 constexpr size_t kMaxUniforms = 64;
 constexpr size_t kMaxTextures = 8;
 constexpr size_t kMaxTargets = 16;

@@ -25,6 +25,10 @@ inline constexpr int kMaxJsonDepth = 64;
 nlohmann::json parse_json(std::istream& text, const std::string& what);
 nlohmann::json parse_json(const std::string& text, const std::string& what);
 
+// The range of a number with no natural one (a coordinate, a colour, a
+// uniform): beyond +-1e30 a value is a typo, and infinities stay out.
+inline constexpr double kHuge = 1e30;
+
 class JsonReader {
 public:
     JsonReader(const nlohmann::json& object, std::string path);

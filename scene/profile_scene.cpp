@@ -24,7 +24,6 @@ namespace st {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr int kMaxTargetSize = 4096;
 
 Texture target_texture(const std::string& sampler, const std::string& target) {
@@ -75,13 +74,13 @@ ProfileSceneSpec read_profile_scene(JsonReader& scene) {
     geometry_r.finish();
 
     JsonReader view_r = scene.object("view");
-    spec.view_angle = view_r.number_or("angle_deg", 30.0, 0.0, 89.0) * kPi / 180.0;
-    spec.view_azimuth = view_r.number_or("azimuth_deg", -90.0, -360.0, 360.0) * kPi / 180.0;
+    spec.view_angle = view_r.number_or("angle_deg", 30.0, 0.0, 89.0) * std::numbers::pi / 180.0;
+    spec.view_azimuth = view_r.number_or("azimuth_deg", -90.0, -360.0, 360.0) * std::numbers::pi / 180.0;
     const double extent = spec.shape.kind == "ellipsoid"
                               ? 2.0 * std::max({spec.shape.radii.x, spec.shape.radii.y, spec.shape.radii.z})
                               : spec.shape.size_mm;
     spec.view_distance = view_r.number_or("distance_mm", 2.0 * extent, 1e-3, 1e6);
-    spec.fov = view_r.number_or("fov_deg", 45.0, 1.0, 120.0) * kPi / 180.0;
+    spec.fov = view_r.number_or("fov_deg", 45.0, 1.0, 120.0) * std::numbers::pi / 180.0;
     view_r.finish();
 
     // A directional light; its pattern (a spot, a shadow edge) as
@@ -209,7 +208,7 @@ Frame build_profile_scene(JsonReader& scene, SceneSize size) {
     const double m = material.roughness();
     for (Uniform u : {int_uniform("rough", m > 0 ? 1 : 0), uniform("eta", float(material.eta())),
                       uniform("inv_m2", m > 0 ? float(1.0 / (m * m)) : 0.0f),
-                      uniform("beckmann_norm", m > 0 ? float(1.0 / (kPi * m * m)) : 0.0f),
+                      uniform("beckmann_norm", m > 0 ? float(1.0 / (std::numbers::pi * m * m)) : 0.0f),
                       uniform("eye", glm::vec3(profile_eye(spec))), uniform("light_direction", light_direction),
                       uniform("light_irradiance", irradiance), uniform("spot", spot), uniform("edge", edge)})
         d.uniforms.push_back(u);

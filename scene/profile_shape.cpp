@@ -15,7 +15,6 @@ namespace st {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 void push_vertex(ProfileMesh& m, const SurfacePoint& s, double u, double v) {
     m.vertices.data.push_back(glm::vec4(glm::vec3(s.position), 1.0f));
@@ -89,7 +88,7 @@ ProfileShape read_profile_shape(JsonReader& geometry) {
 
 SurfacePoint surface_point(const ProfileShape& shape, double u, double v) {
     if (shape.kind == "ellipsoid") {
-        const double phi = 2.0 * kPi * u + shape.seam_azimuth_deg * kPi / 180.0, theta = kPi * v;
+        const double phi = 2.0 * std::numbers::pi * u + shape.seam_azimuth_deg * std::numbers::pi / 180.0, theta = std::numbers::pi * v;
         const glm::dvec3 d(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), -std::cos(theta));
         const glm::dvec3 p = shape.radii * d;
         // The gradient of |p / radii|^2, outward.
@@ -97,7 +96,7 @@ SurfacePoint surface_point(const ProfileShape& shape, double u, double v) {
     }
     const double h = 0.5 * shape.size_mm;
     const double x = (2.0 * u - 1.0) * h, y = (2.0 * v - 1.0) * h;
-    const double bend = shape.kind == "sheet" ? shape.bend_deg * kPi / 180.0 : 0.0;
+    const double bend = shape.kind == "sheet" ? shape.bend_deg * std::numbers::pi / 180.0 : 0.0;
     if (bend < 1e-9) return {glm::dvec3(x, y, 0.0), glm::dvec3(0.0, 0.0, 1.0)};
     // An arc of radius size / bend through the origin, centred on (0, 0, -radius).
     const double radius = shape.size_mm / bend, a = x / radius;

@@ -75,7 +75,6 @@ StoneHit nearest_stone(const StoneParams& p, double qx, double qy) {
     return hit;
 }
 
-uint8_t to_byte(double v) { return uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); }
 
 Texture rgba8_trilinear(const std::string& sampler, int size) {
     Texture t;
@@ -150,10 +149,10 @@ Texture relief_texture(const HeightField& field, double depth, const std::string
             const double nx = -depth * dhdu, ny = -depth * dhdv, nz = 1.0;
             const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
             uint8_t* o = &t.texels8[(size_t(y) * size_t(field.size) + size_t(x)) * 4];
-            o[0] = to_byte(nx / len * 0.5 + 0.5);
-            o[1] = to_byte(ny / len * 0.5 + 0.5);
-            o[2] = to_byte(nz / len * 0.5 + 0.5);
-            o[3] = to_byte(field.at(x, y));
+            o[0] = unit_to_byte(nx / len * 0.5 + 0.5);
+            o[1] = unit_to_byte(ny / len * 0.5 + 0.5);
+            o[2] = unit_to_byte(nz / len * 0.5 + 0.5);
+            o[3] = unit_to_byte(field.at(x, y));
         }
     generate_box_mips(t, full_chain_levels(t.width, t.height));
     return t;
@@ -173,7 +172,7 @@ Texture stone_colour_texture(const StoneParams& p, const std::string& sampler) {
             const double joint = 1.0 - smoothstep01((s.border - p.mortar) / (0.25 * p.bevel));
             const double mortar[3] = {0.70, 0.68, 0.63};
             uint8_t* o = &t.texels8[(size_t(y) * size_t(p.size) + size_t(x)) * 4];
-            for (int c = 0; c < 3; ++c) o[c] = to_byte((rgb[c] + (mortar[c] - rgb[c]) * joint) * grain);
+            for (int c = 0; c < 3; ++c) o[c] = unit_to_byte((rgb[c] + (mortar[c] - rgb[c]) * joint) * grain);
             o[3] = 255;
         }
     generate_box_mips(t, full_chain_levels(t.width, t.height));

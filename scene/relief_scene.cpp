@@ -21,7 +21,6 @@ namespace st {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr int kMaxLinearSteps = 512, kMaxBinarySteps = 32, kMaxCrossings = 16;
 
 struct View {
@@ -156,10 +155,10 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
     // The camera: `distance` from the origin, `angle_deg` from the surface
     // normal (0 looks straight down), `azimuth_deg` around it.
     JsonReader view_r = scene.object("view");
-    const double theta = view_r.number_or("angle_deg", 45.0, 0.0, 89.0) * kPi / 180.0;
-    const double phi = view_r.number_or("azimuth_deg", 0.0, -360.0, 360.0) * kPi / 180.0;
+    const double theta = view_r.number_or("angle_deg", 45.0, 0.0, 89.0) * std::numbers::pi / 180.0;
+    const double phi = view_r.number_or("azimuth_deg", 0.0, -360.0, 360.0) * std::numbers::pi / 180.0;
     const double distance = view_r.number_or("distance", 2.0, 1e-3, 1e3);
-    const double fov = view_r.number_or("fov_deg", 45.0, 1.0, 120.0) * kPi / 180.0;
+    const double fov = view_r.number_or("fov_deg", 45.0, 1.0, 120.0) * std::numbers::pi / 180.0;
     // 0: the surface must cover the screen (Table 1's measurements).
     const double horizon = view_r.number_or("horizon_distance", 0.0, 0.0, 1e4);
     view_r.finish();

@@ -2,6 +2,7 @@
 #include "scene/texture_patterns.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "scene/input_error.h"
@@ -17,6 +18,8 @@ uint32_t hash32(uint32_t x) {
     x ^= x >> 16;
     return x;
 }
+
+uint8_t unit_to_byte(double v) { return uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); }
 
 namespace {
 

@@ -14,6 +14,9 @@ namespace st {
 // the one every generated texture draws its randomness from.
 uint32_t hash32(uint32_t x);
 
+// A value in [0, 1] as an 8-bit texel, rounded to nearest (clamped first).
+uint8_t unit_to_byte(double v);
+
 // Reads a texture object: {"format": "rgba8"|"rgba32f", "filter":
 // "linear"|"nearest", "wrap": "repeat"|"clamp", "width", "height",
 // "pattern": "checker"|"noise", "seed"}. `sampler` is the GLSL uniform name.

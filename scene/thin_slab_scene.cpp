@@ -24,7 +24,6 @@ namespace st {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // Vertex layout of the host variant: the radiance slot is rewritten per frame.
 [[maybe_unused]] constexpr int kHostPosition = 0, kHostRadiance = 1, kHostUv = 2, kHostNormal = 3;
@@ -79,10 +78,10 @@ void flag_mesh(const FlagShape& f, bool host_layout, DrawCall& draw) {
     for (int j = 0; j <= f.rows; ++j)
         for (int i = 0; i <= f.columns; ++i) {
             const double u = double(i) / f.columns, v = double(j) / f.rows;
-            const double phase = 2.0 * kPi * (f.frequency * u - f.time) + 1.3 * v;
+            const double phase = 2.0 * std::numbers::pi * (f.frequency * u - f.time) + 1.3 * v;
             const double x = (u - 0.5) * f.width, y = (v - 0.5) * f.height;
             const double z = f.amplitude * u * std::sin(phase);
-            const double dzdu = f.amplitude * (std::sin(phase) + u * std::cos(phase) * 2.0 * kPi * f.frequency);
+            const double dzdu = f.amplitude * (std::sin(phase) + u * std::cos(phase) * 2.0 * std::numbers::pi * f.frequency);
             const double dzdv = f.amplitude * u * std::cos(phase) * 1.3;
             const double nx = -dzdu / f.width, ny = -dzdv / f.height, nz = 1.0;
             const double len = std::sqrt(nx * nx + ny * ny + nz * nz);
@@ -134,7 +133,7 @@ Frame build_thin_slab_scene(JsonReader& scene, SceneSize size) {
     const float power = float(light_r.number("power", 0.0, 1e12));
     const double radius = light_r.number_or("orbit_radius", 3.0, 0.0, 1e6);
     const double height = light_r.number_or("orbit_height", 0.5, -1e6, 1e6);
-    const double angle = light_r.number_or("angle_deg", 0.0, -1e6, 1e6) * kPi / 180.0;
+    const double angle = light_r.number_or("angle_deg", 0.0, -1e6, 1e6) * std::numbers::pi / 180.0;
     glm::vec3 light(float(radius * std::sin(angle)), float(height), float(radius * std::cos(angle)));
     if (light_r.has("position")) light = vec3_of(light_r.numbers("position", 3, 3, -1e6, 1e6));
     light_r.finish();

@@ -5,11 +5,12 @@
 #include <cmath>
 #include <cstdint>
 
+#include "scene/texture_patterns.h"
+
 namespace st {
 
 namespace {
 
-uint8_t to_byte(double v) { return uint8_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); }
 
 Texture rgba8(const std::string& sampler, int w, int h) {
     Texture t;
@@ -25,9 +26,9 @@ Texture rgba8(const std::string& sampler, int w, int h) {
 
 void put(Texture& t, int x, int y, double r, double g, double b) {
     uint8_t* p = &t.texels8[(size_t(y) * t.width + x) * 4];
-    p[0] = to_byte(r);
-    p[1] = to_byte(g);
-    p[2] = to_byte(b);
+    p[0] = unit_to_byte(r);
+    p[1] = unit_to_byte(g);
+    p[2] = unit_to_byte(b);
     p[3] = 255;
 }
 

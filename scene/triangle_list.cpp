@@ -7,7 +7,6 @@ namespace st {
 
 namespace {
 
-constexpr double kHuge = 1e30;          // coordinates beyond this are a typo
 constexpr size_t kMaxTriangles = 1 << 20;
 
 // Pixel positions map to clip space with w = 1: x_clip = x * (2/W) - 1. For
@@ -25,11 +24,11 @@ glm::vec4 clip_position(const std::vector<double>& p) {
                      p.size() > 3 ? float(p[3]) : 1.0f);
 }
 
-glm::vec4 to_vec4(const std::vector<double>& v) {
+}  // namespace
+
+glm::vec4 rgba(const std::vector<double>& v) {
     return glm::vec4(float(v[0]), float(v[1]), float(v[2]), v.size() > 3 ? float(v[3]) : 1.0f);
 }
-
-}  // namespace
 
 // Error paths are built only when a value is refused (JsonReader's lazy
 // checked_number): a mesh of a million triangles has eighteen million
@@ -80,7 +79,7 @@ void read_triangle_list(JsonReader& scene, SceneSize size, TriangleListFormat fo
                 throw InputError("field '" + where() + ".3' (w) must not be 0 (as a 32-bit float)");
             draw.indices.push_back(uint32_t(draw.vertices.vertex_count()));
             draw.vertices.data.push_back(format.pixels ? pixel_to_clip(p, size) : clip_position(p));
-            draw.vertices.data.push_back(to_vec4(colours[i]));
+            draw.vertices.data.push_back(rgba(colours[i]));
             if (uvs) {
                 auto uv_where = [&] { return t.field("uvs") + "." + std::to_string(i); };
                 const auto& uv = (*uvs)[i];

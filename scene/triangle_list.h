@@ -16,6 +16,9 @@ struct TriangleListFormat {
     bool colour_optional = false;  // no colour means white
 };
 
+// An RGB or RGBA colour as a scene file gives it (alpha 1 when absent).
+glm::vec4 rgba(const std::vector<double>& v);
+
 void read_triangle_list(JsonReader& scene, SceneSize size, TriangleListFormat format, DrawCall& draw);
 
 }  // namespace st

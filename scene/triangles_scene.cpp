@@ -9,16 +9,11 @@ namespace st {
 
 namespace {
 
-constexpr double kHuge = 1e30;  // colours beyond this are a typo
 
 BlendMode parse_blend(const std::string& name) {
     if (name == "one_src_alpha") return BlendMode::OneSrcAlpha;
     if (name == "alpha") return BlendMode::SrcAlphaOneMinusSrcAlpha;
     return BlendMode::None;
-}
-
-glm::vec4 to_vec4(const std::vector<double>& v) {
-    return glm::vec4(float(v[0]), float(v[1]), float(v[2]), v.size() > 3 ? float(v[3]) : 1.0f);
 }
 
 }  // namespace
@@ -29,7 +24,7 @@ Frame build_triangles_scene(JsonReader& scene, SceneSize size) {
     pass.height = size.height;
     const auto clear = scene.has("clear_colour") ? scene.numbers("clear_colour", 4, 4, -kHuge, kHuge)
                                                  : std::vector<double>{0, 0, 0, 0};
-    pass.clear_colour = to_vec4(clear);
+    pass.clear_colour = rgba(clear);
 
     const bool pixels = scene.choice_or("coordinates", "clip", {"clip", "pixels"}) == "pixels";
     DrawCall draw;
