@@ -4,6 +4,9 @@
 
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
+# python3 as tests/CMakeLists.txt resolved it (the interpreter, not a shim).
+if [ -n "${SHADERTWIN_PYTHON:-}" ]; then python3() { "$SHADERTWIN_PYTHON" "$@"; }; fi
+
 # expect_refused WHAT EXPECTED COMMAND...: the command, given --out on an
 # empty folder, must exit 2 with one line on stderr that contains EXPECTED
 # (anything when it is empty), and leave nothing in that folder.
