@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "image/image_library.h"
+#include "image/error_stats.h"
 #include "image/unorm8.h"
 
 namespace st {
@@ -55,7 +55,7 @@ CompareMetrics compare_images(const Image& a, const Image& b) {
     m.identical_fraction_8bit = pixels ? double(same8) / pixels : 1.0;
     m.identical_fraction_float = pixels ? double(same_float) / pixels : 1.0;
 
-    const ImageErrorStats r = image_library().error_stats(a.rgba.data(), b.rgba.data(), a.width, a.height);
+    const ImageErrorStats r = error_stats(a.rgba.data(), b.rgba.data(), a.width, a.height);
     m.max_abs_diff = r.max_error;
     m.mean_abs_diff = r.mean_error;
     m.rms_error = r.rms_error;

@@ -1,5 +1,6 @@
-// image_io.cpp: image readers and writers (OpenImageIO, through
-// image_library.h), with temp-and-rename.
+// image_io.cpp: image readers (OpenImageIO, through image_library.h) and
+// writers (libpng and OpenEXR: png_file.h, exr_file.h), with
+// temp-and-rename.
 #include "image/image_io.h"
 
 #include <cstdio>
@@ -10,8 +11,10 @@
 
 #include <unistd.h>
 
+#include "image/exr_file.h"
 #include "image/file_provenance.h"
 #include "image/image_library.h"
+#include "image/png_file.h"
 #include "image/png_structure.h"
 #include "image/stderr_capture.h"
 #include "image/unorm8.h"
@@ -23,7 +26,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // A temporary name in the target's folder (rename stays on one filesystem);
-// the extension is kept so OpenImageIO picks the right format.
+// the extension is kept, so a half-written file shows its kind.
 std::string temp_name(const std::string& path) {
     fs::path p(path);
     return (p.parent_path() / (".tmp-" + std::to_string(getpid()) + "-" + p.filename().string()))
@@ -39,10 +42,12 @@ void commit(const std::string& tmp, const std::string& path) {
     }
 }
 
-void write_through_library(const std::string& path, int width, int height, int channels, bool floats,
-                           const void* pixels, const std::map<std::string, std::string>& attributes) {
+// Writes through `write` (a png_file.h or exr_file.h writer given the
+// temporary name) and renames the result into place.
+template <class Writer>
+void write_then_commit(const std::string& path, Writer&& write) {
     const std::string tmp = temp_name(path);
-    const std::string err = image_library().write(tmp, width, height, channels, floats, pixels, attributes);
+    const std::string err = write(tmp);
     if (!err.empty()) {
         std::error_code ec;
         fs::remove(tmp, ec);
@@ -62,8 +67,9 @@ std::map<std::string, std::string> provenance_attributes() {
 void write_exr(const std::string& path, const Image& image, const Metadata& metadata) {
     std::map<std::string, std::string> attributes = provenance_attributes();
     for (const auto& [key, value] : metadata) attributes["shadertwin:" + key] = value;
-    attributes["compression"] = "zip";
-    write_through_library(path, image.width, image.height, 4, true, image.rgba.data(), attributes);
+    write_then_commit(path, [&](const std::string& tmp) {
+        return write_exr_file(tmp, image.width, image.height, image.rgba.data(), attributes);
+    });
 }
 
 void write_png(const std::string& path, const Image& image) {
@@ -74,7 +80,9 @@ void write_png(const std::string& path, const Image& image) {
 
 void write_png_bytes(const std::string& path, int width, int height, int channels,
                      const unsigned char* bytes) {
-    write_through_library(path, width, height, channels, false, bytes, provenance_attributes());
+    write_then_commit(path, [&](const std::string& tmp) {
+        return write_png_file(tmp, width, height, channels, bytes, provenance_attributes());
+    });
 }
 
 Image read_image(const std::string& path, Metadata* metadata) {

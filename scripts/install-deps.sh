@@ -7,7 +7,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config
-  libglm-dev libopenimageio-dev openimageio-tools libopenexr-dev
+  libglm-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev nettle-dev
   libgtest-dev libbenchmark-dev
   mesa-common-dev libosmesa6-dev libegl-dev libegl-mesa0  # GL headers; the two GL platforms (gl/gl_context.h)
   nlohmann-json3-dev libcli11-dev libkissfft-dev
