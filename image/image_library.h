@@ -1,6 +1,6 @@
 // image_library.h: what shadertwin asks of OpenImageIO (reading image
 // files of any format it knows; and, as the reference the faster paths are
-// checked against, writing, the SHA-1 pixel hash golden files keep and a
+// checked against, the SHA-1 pixel hash golden files keep and a
 // comparison's error statistics), behind one interface. Its implementation
 // (image_library_oiio.cpp) is a shared library of ours,
 // libshadertwin_oiio.so, loaded the first time a process reads an image:
@@ -32,12 +32,6 @@ class ImageLibrary {
 public:
     virtual ~ImageLibrary() = default;
 
-    // Writes width x height x channels pixels (float or 8-bit, rows top to
-    // bottom) to `path` in the format its extension names, with the given
-    // attributes (EXR attributes, PNG text chunks). Returns the error, empty
-    // when it wrote the file.
-    virtual std::string write(const std::string& path, int width, int height, int channels, bool floats,
-                              const void* pixels, const std::map<std::string, std::string>& attributes) const = 0;
     // Reads any image the library reads, refusing (before allocating) a
     // header beyond max_side pixels a side or 64 channels; RGBA floats out,
     // missing alpha 1, and the string attributes named "shadertwin:*".
@@ -56,7 +50,7 @@ public:
 const ImageLibrary& image_library();
 
 // Bumped whenever ImageLibrary changes: a module of another version is refused.
-inline constexpr int kImageLibraryVersion = 1;
+inline constexpr int kImageLibraryVersion = 2;
 
 }  // namespace st
 

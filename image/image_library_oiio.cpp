@@ -12,22 +12,6 @@ namespace {
 
 class OiioLibrary final : public ImageLibrary {
 public:
-    std::string write(const std::string& path, int width, int height, int channels, bool floats, const void* pixels,
-                      const std::map<std::string, std::string>& attributes) const override {
-        const OIIO::TypeDesc type = floats ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-        OIIO::ImageSpec spec(width, height, channels, type);
-        for (const auto& [key, value] : attributes) spec.attribute(key, value);
-        // zlib's fastest level: an 800x600 PNG in 61 ms instead of the
-        // default level's 293, for 17 % more bytes; a compare writes up to
-        // five PNGs a scene, and deflate was a third of its time.
-        spec.attribute("png:compressionLevel", 1);
-        auto out = OIIO::ImageOutput::create(path);
-        if (!out) return OIIO::geterror();
-        bool ok = out->open(path, spec) && out->write_image(type, pixels);
-        ok = out->close() && ok;
-        return ok ? std::string() : out->geterror();
-    }
-
     bool read(const std::string& path, int max_side, int& width, int& height, std::vector<float>& rgba,
               std::map<std::string, std::string>& attributes, std::string& error) const override {
         auto in = OIIO::ImageInput::open(path);
