@@ -69,12 +69,9 @@ ProfileExact exact_profile_image(const Scene& scene) {
     const double front = entering(l.z), back = spec.material.thin() ? entering(-l.z) : 0.0;
 
     // The whole profile, tail included: the ground truth is not cut where
-    // the gather's reach ends.
-    // A Monte Carlo profile is a histogram, noisy at a part in a thousand and
-    // kinked at every bin: integrating it to 1e-10 took the adaptive rule a
-    // minute at 160x120 for nothing; 1e-7 is still far below its noise.
-    const double tolerance = spec.material.model == "mc" ? 1e-7 : 1e-10;
-    const reference::ConvolutionSettings settings{4.0 * reach, tolerance};
+    // the gather's reach ends. A tabulated profile (layered, Monte Carlo)
+    // is read linearly between its radii, so the integrals break there.
+    const reference::ConvolutionSettings settings{4.0 * reach, 1e-10, profiles->knots};
     const int n = 4000;
     ProfileExact out;
     out.reach_mm = reach;

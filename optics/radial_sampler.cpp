@@ -29,7 +29,7 @@ RadialSampler::RadialSampler(std::function<double(double)> profile, double tail_
             throw std::invalid_argument("radial sampler: the profile is negative or not finite at r = " + std::to_string(r));
         return v;
     };
-    auto total_to = [&](double r) { return reference::profile_total(checked, reference::ConvolutionSettings{r, 1e-10}); };
+    auto total_to = [&](double r) { return reference::profile_total(checked, reference::ConvolutionSettings{r, 1e-10, {}}); };
     double r = 1e-3, inner = total_to(r);
     for (;;) {
         if (r > 1e4) throw std::invalid_argument("radial sampler: the profile does not fall off within 1e4 mm");
@@ -83,7 +83,7 @@ std::vector<GatherSample> RadialSampler::importance_pattern(int n) const {
 }
 
 double radial_total(const std::function<double(double)>& profile, double tail_fraction) {
-    if (reference::profile_total(profile, reference::ConvolutionSettings{1e4, 1e-10}) == 0.0) return 0.0;
+    if (reference::profile_total(profile, reference::ConvolutionSettings{1e4, 1e-10, {}}) == 0.0) return 0.0;
     return RadialSampler(profile, tail_fraction).total();
 }
 

@@ -65,7 +65,7 @@ TEST(RadialSampler, EdgeGatherConvergesToTheExactConvolution) {
             profile = [dipole](double r) { return dipole.reflectance(r); };
         }
         const RadialSampler s(profile, 1e-5);
-        const reference::ConvolutionSettings exact{s.r_max(), 1e-10};
+        const reference::ConvolutionSettings exact{s.r_max(), 1e-10, {}};
         // A deterministic pattern's error does not fall at every step (its
         // samples move: the exponential's edge error is the same 0.64 % at
         // 128 and 512 samples, where 49/128 = 196/512 samples fall on the lit

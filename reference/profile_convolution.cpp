@@ -82,11 +82,14 @@ void check(const RadialProfile& profile, const ConvolutionSettings& s) {
     if (!(s.tolerance > 0)) throw std::invalid_argument("profile convolution: tolerance must be > 0");
 }
 
-// Sorted, inside [0, r_max], with both ends.
-std::vector<double> breakpoints(std::vector<double> inner, double r_max) {
-    std::vector<double> b{0.0, r_max};
+// Sorted, inside [0, r_max], with both ends: the kinks of the lit share,
+// `inner`, and the profile's own.
+std::vector<double> breakpoints(std::vector<double> inner, const ConvolutionSettings& s) {
+    std::vector<double> b{0.0, s.r_max};
     for (double x : inner)
-        if (x > 0 && x < r_max) b.push_back(x);
+        if (x > 0 && x < s.r_max) b.push_back(x);
+    for (double x : s.knots)
+        if (x > 0 && x < s.r_max) b.push_back(x);
     std::sort(b.begin(), b.end());
     return b;
 }
@@ -96,7 +99,7 @@ std::vector<double> breakpoints(std::vector<double> inner, double r_max) {
 double profile_total(const RadialProfile& profile, const ConvolutionSettings& s) {
     check(profile, s);
     auto f = [&](double r) { return profile(r) * 2 * kPi * r; };
-    return integrate(f, breakpoints({}, s.r_max), s.tolerance);
+    return integrate(f, breakpoints({}, s), s.tolerance);
 }
 
 double convolve_half_plane(const RadialProfile& profile, double d, const ConvolutionSettings& s) {
@@ -109,7 +112,7 @@ double convolve_half_plane(const RadialProfile& profile, double d, const Convolu
                                             : 0.5 + std::asin(std::clamp(d / r, -1.0, 1.0)) / kPi;
         return lit == 0 ? 0.0 : profile(r) * 2 * kPi * r * lit;
     };
-    return integrate(f, breakpoints({std::abs(d)}, s.r_max), s.tolerance);
+    return integrate(f, breakpoints({std::abs(d)}, s), s.tolerance);
 }
 
 double convolve_disk(const RadialProfile& profile, double a, double rho, const ConvolutionSettings& s) {
@@ -127,7 +130,7 @@ double convolve_disk(const RadialProfile& profile, double a, double rho, const C
         else lit = std::acos(std::clamp((r * r + rho * rho - a * a) / (2 * r * rho), -1.0, 1.0)) / kPi;
         return lit == 0 ? 0.0 : profile(r) * 2 * kPi * r * lit;
     };
-    return integrate(f, breakpoints({std::abs(a - rho), a + rho}, s.r_max), s.tolerance);
+    return integrate(f, breakpoints({std::abs(a - rho), a + rho}, s), s.tolerance);
 }
 
 }  // namespace st::reference

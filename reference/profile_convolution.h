@@ -10,6 +10,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 namespace st::reference {
 
@@ -24,6 +25,11 @@ using RadialProfile = std::function<double(double r)>;
 struct ConvolutionSettings {
     double r_max = 100.0;  // mm
     double tolerance = 1e-12;
+    // Radii where the profile itself is kinked (a tabulated profile read
+    // linearly), sorted: the integral breaks there too. Without them the
+    // adaptive rule bisects towards every kink until its error estimate
+    // allows, thousands of pieces for a 400-bin histogram.
+    std::vector<double> knots;
 };
 
 // Unit irradiance on the half-plane on one side of a straight edge; the

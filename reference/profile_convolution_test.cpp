@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <numbers>
 
 namespace st::reference {
@@ -70,11 +72,51 @@ TEST(ProfileConvolution, OffCentreDiskAgainstABruteForceSum) {
     }
 }
 
+TEST(ProfileConvolution, TabulatedProfileBreaksAtItsKnots) {
+    // A histogram-like profile, linear between 200 knots: its total is a
+    // closed form per segment. With the knots as breakpoints each piece is a
+    // polynomial that Gauss-Kronrod integrates at once; without them the
+    // rule bisects towards every kink (the exact image of a Monte Carlo
+    // profile took 17 s of a 23 s sweep that way).
+    std::vector<double> x, y;
+    for (int i = 0; i < 200; ++i) {
+        x.push_back(0.05 * (i + 0.5));
+        y.push_back(std::exp(-x.back()) * (1.0 + 0.3 * ((i * 7) % 5)));
+    }
+    long calls = 0;
+    const RadialProfile p = [&](double r) {
+        ++calls;
+        if (!(r > x.front())) return y.front();
+        if (!(r < x.back())) return 0.0;
+        const size_t i = size_t(std::upper_bound(x.begin(), x.end(), r) - x.begin()) - 1;
+        return y[i] + (r - x[i]) / (x[i + 1] - x[i]) * (y[i + 1] - y[i]);
+    };
+    // Integral of (y0 + s (r - x0)) 2 pi r over each segment, and the flat
+    // disk inside the first knot.
+    double exact = y.front() * kPi * x.front() * x.front();
+    for (size_t i = 0; i + 1 < x.size(); ++i) {
+        const double a = x[i], b = x[i + 1], s = (y[i + 1] - y[i]) / (b - a), c = y[i] - s * a;
+        exact += 2 * kPi * (c * (b * b - a * a) / 2 + s * (b * b * b - a * a * a) / 3);
+    }
+    ConvolutionSettings knotted{20.0, 1e-10, x};
+    EXPECT_NEAR(profile_total(p, knotted), exact, 1e-10 * exact);
+    const long with_knots = calls;
+    calls = 0;
+    EXPECT_NEAR(profile_total(p, ConvolutionSettings{20.0, 1e-10, {}}), exact, 1e-8 * exact);
+    EXPECT_LT(with_knots * 5, calls) << with_knots << " evaluations with the knots, " << calls << " without";
+    // Knots beyond the range, unsorted or not finite are ignored or sorted.
+    knotted.knots.push_back(-1.0);
+    knotted.knots.push_back(NAN);
+    knotted.knots.push_back(1e9);
+    std::reverse(knotted.knots.begin(), knotted.knots.end());
+    EXPECT_NEAR(profile_total(p, knotted), exact, 1e-10 * exact);
+}
+
 TEST(ProfileConvolution, RejectsBadInput) {
     EXPECT_THROW(convolve_half_plane(gaussian(1), NAN), std::invalid_argument);
     EXPECT_THROW(convolve_disk(gaussian(1), -1, 0), std::invalid_argument);
     EXPECT_THROW(convolve_disk(gaussian(1), 1, INFINITY), std::invalid_argument);
-    EXPECT_THROW(profile_total(gaussian(1), ConvolutionSettings{0.0, 1e-12}), std::invalid_argument);
+    EXPECT_THROW(profile_total(gaussian(1), ConvolutionSettings{0.0, 1e-12, {}}), std::invalid_argument);
     EXPECT_THROW(profile_total(RadialProfile{}), std::invalid_argument);
 }
 

@@ -168,6 +168,7 @@ std::shared_ptr<BuiltProfiles> build(const ProfileMaterial& m, const GatherSetti
         }
         out->dipoles = t->dipoles;
         const auto radii = std::make_shared<const std::vector<double>>(t->radii);
+        out->knots = t->radii;
         for (int c = 0; c < 3; ++c) {
             out->R[size_t(c)] = interpolated(radii, std::make_shared<const std::vector<double>>(t->R[size_t(c)]));
             out->T[size_t(c)] = interpolated(radii, std::make_shared<const std::vector<double>>(t->T[size_t(c)]));

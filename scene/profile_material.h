@@ -67,6 +67,10 @@ struct BuiltProfiles {
     // The profiles themselves, per mm^2 in double (channel R, G, B), for
     // the ground truth and the tables' own error.
     std::array<std::function<double(double)>, 3> R, T;
+    // The radii where R and T are kinked (a tabulated profile's, read
+    // linearly between them), sorted; empty for the analytic models. An
+    // integral of a profile converges fast only if it breaks there.
+    std::vector<double> knots;
 };
 
 std::shared_ptr<const BuiltProfiles> build_profiles(const ProfileMaterial& m, const GatherSettings& g);
