@@ -14,8 +14,13 @@ shift $(( $# < 3 ? $# : 3 ))
 targets=("$@")
 [ "${#targets[@]}" -gt 0 ] || targets=(scene_fuzzer layer_file_fuzzer image_fuzzer raster_fuzzer)
 source "$src/scripts/sanitizer-env.sh"
-status=0
-for t in "${targets[@]}"; do
+# One target per core at a time (FUZZ_JOBS, default nproc): each target is a
+# single process, so on two cores two targets fuzz in the time of one. The
+# lines are printed in the targets' order once all have finished.
+jobs_max="${FUZZ_JOBS:-$(nproc)}"
+
+fuzz_one() {  # fuzz_one TARGET: runs it, leaves its line in $work/TARGET/result and its exit code in .../rc
+  local t="$1" log rc runs rate extra
   mkdir -p "$work/$t/new"
   log="$work/$t/log"
   set +e
@@ -27,11 +32,26 @@ for t in "${targets[@]}"; do
   rate=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log")
   extra=$(grep -E '^raster_fuzzer: ' "$log" || true)
   if [ "$rc" -ne 0 ]; then
-    echo "FAIL $t (exit $rc): $(ls "$work/$t" | grep -E '^(crash|timeout|oom|leak)-' | head -3)" >&2
-    grep -E 'ERROR|runtime error|SUMMARY|deadly signal' "$log" | head -5 >&2
+    { echo "FAIL $t (exit $rc): $(ls "$work/$t" | grep -E '^(crash|timeout|oom|leak)-' | head -3)"
+      grep -E 'ERROR|runtime error|SUMMARY|deadly signal' "$log" | head -5; } >"$work/$t/result"
+  else
+    echo "ok   $t: ${runs:-?} inputs in ${seconds} s (${rate:-?}/s)${extra:+; $extra}" >"$work/$t/result"
+  fi
+  echo "$rc" >"$work/$t/rc"
+}
+
+for t in "${targets[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do wait -n || true; done
+  fuzz_one "$t" &
+done
+wait
+status=0
+for t in "${targets[@]}"; do
+  if [ "$(cat "$work/$t/rc" 2>/dev/null || echo 1)" -ne 0 ]; then
+    cat "$work/$t/result" >&2 2>/dev/null || echo "FAIL $t: no result" >&2
     status=1
   else
-    echo "ok   $t: ${runs:-?} inputs in ${seconds} s (${rate:-?}/s)${extra:+; $extra}"
+    cat "$work/$t/result"
   fi
 done
 exit $status
