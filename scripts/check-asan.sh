@@ -3,7 +3,7 @@
 # ./test.sh): a clang++ build with both sanitizers and the libFuzzer targets
 # in build-asan/, the test suite under it (every UB finding and every leak
 # of ours fails a test; Mesa's leaks: tests/sanitizers/lsan.supp) but the
-# per-scene tests (cli.compare_builtin and cli.golden run every scene) and
+# per-scene tests (cli.compare_builtin runs every scene) and
 # the long ones (they compare hashes across builds, which a sanitizer adds
 # nothing to; .ci/run runs them on the release build), then a short run of
 # each fuzz target (FUZZ_SECONDS each, default 20).

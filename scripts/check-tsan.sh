@@ -12,7 +12,7 @@ build=build-tsan
 if [ ! -f "$build/CMakeCache.txt" ]; then
   CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADERTWIN_SANITIZE=thread >&2
 fi
-cmake --build "$build" -j "$(nproc)" --target shadertwin unit_tests >&2
+cmake --build "$build" -j "$(nproc)" --target shadertwin thread_unit_tests >&2
 source scripts/sanitizer-env.sh
-"$build/tests/unit_tests" --gtest_brief=1 --gtest_filter='WorkerPool.*:MonteCarlo.*:*Thread*'
+"$build/tests/thread_unit_tests" --gtest_brief=1
 bash tests/sanitizers/threads.sh "$build/shadertwin"

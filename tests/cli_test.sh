@@ -54,6 +54,24 @@ case "$case_name" in
       [ -f "$work/$s.diff.png" ] || fail "no heat map for $s"
     done
     check_memory "$work/out.jsonl"
+    # The same renders are the golden check: every CPU image and named
+    # output against tests/golden/hashes.json, and every golden hash met
+    # (cli.golden runs the command itself on a scene of each kind).
+    python3 - "$(dirname "$0")/golden/hashes.json" "$work/out.jsonl" <<'PY' || fail "a CPU hash differs from its golden"
+import json, sys
+golden = json.load(open(sys.argv[1]))
+got = {}
+for line in open(sys.argv[2]):
+    j = json.loads(line)
+    got[j["scene"]] = j["cpu_hash"]
+    for o in j["outputs"]:
+        got[j["scene"] + ":" + o["name"]] = o["cpu_hash"]
+bad = [f"{k}: golden {golden.get(k, 'none')}, now {v}" for k, v in got.items() if golden.get(k) != v]
+missing = sorted(set(golden) - set(got))
+assert not bad, "\n".join(bad)
+assert not missing, "never rendered: " + " ".join(missing)
+print(f"ok   {len(got)} CPU hashes equal to tests/golden/hashes.json")
+PY
     ;;
 
   egl_every_scene)
@@ -91,7 +109,17 @@ PY
     ;;
 
   golden)
-    "$bin" golden check
+    # The command on a scene of each kind (every scene's hash against its
+    # golden is cli.compare_builtin's, from the same renders), named
+    # outputs and mip levels included; a changed hash fails it.
+    scenes="triangles-basic conformance-bloom-chain relief-bloom thin-slab-fragment-backlit thin-slab-sweep profile-skin-head-textured"
+    "$bin" golden check $scenes >"$work/golden.out" || { cat "$work/golden.out"; fail "golden check failed"; }
+    cat "$work/golden.out"
+    [ "$(grep -c ' ok$' "$work/golden.out")" -eq "$(grep -cE "\"($(tr ' ' '|' <<<"$scenes"))[:\"]" "$(dirname "$0")/golden/hashes.json")" ] ||
+      fail "not every hash of $scenes was checked"
+    # A changed image is a failure that names the hash.
+    ! "$bin" golden check triangles-basic --set width=65 >"$work/changed.out" 2>&1 &&
+      grep -q "^triangles-basic changed: golden " "$work/changed.out" || fail "a changed image passed: $(cat "$work/changed.out")"
     ;;
 
   gl_platforms)
@@ -123,7 +151,7 @@ PY
 
   threads)
     # The same bits for 1, 3 and 8 threads as for the 2 that the goldens
-    # were made with (cli.golden checks 2): every scene's image and named
+    # were made with (cli.compare_builtin checks 2): every scene's image and named
     # output against tests/golden/hashes.json, each count a run of its own.
     for t in 1 3 8; do
       "$bin" golden check --threads "$t" >"$work/golden.$t" || {
