@@ -115,6 +115,30 @@ Texture albedo_texture(const AlbedoMap& map, const ProfileShape& shape, const Bu
         while (k < kTable && cumulative[size_t(k)] < 0.99 * cumulative[kTable]) ++k;
         reach99 = std::max(reach99, reach * k / kTable);
     }
+    // The gather below reads these per neighbour, as separate arrays so
+    // that its first loop runs over the lanes of the machine: positions,
+    // the albedo per channel, and the profile table per channel.
+    std::vector<double> px(n), py(n), pz(n);
+    std::array<std::vector<double>, 3> albedo_c, kernel_c;
+    for (size_t x = 0; x < n; ++x) px[x] = p[x].x, py[x] = p[x].y, pz[x] = p[x].z;
+    for (int c = 0; c < 3; ++c) {
+        albedo_c[size_t(c)].resize(n);
+        for (size_t x = 0; x < n; ++x) albedo_c[size_t(c)][x] = albedo[x][size_t(c)];
+        kernel_c[size_t(c)].resize(kTable + 1);
+        for (int k = 0; k <= kTable; ++k) kernel_c[size_t(c)][size_t(k)] = kernel[size_t(k)][size_t(c)];
+    }
+    // One row of a texel's window: each neighbour's share of the weights,
+    // whether it lies within reach99, in the order the sums take them.
+    struct RowTerms {
+        std::vector<double> weight[3], sum[3];
+        std::vector<unsigned char> within;
+        void resize(size_t m) {
+            for (int c = 0; c < 3; ++c) weight[c].resize(m), sum[c].resize(m);
+            within.resize(m);
+        }
+    } terms;
+    terms.resize(size_t(size) + 1);
+
     std::vector<float> out(n * 4);
     std::array<double, 3> mean{0, 0, 0};
     double total_area = 0;
@@ -130,22 +154,66 @@ Texture albedo_texture(const AlbedoMap& map, const ProfileShape& shape, const Bu
             const double su = std::max(glm::length(p[xu] - p[x]), 1e-9), sv = std::max(glm::length(p[xv] - p[x]), 1e-9);
             const int wu = std::min(size / 2, int(std::ceil(reach99 / su)) + 1);
             const int wv = std::min(size / 2, int(std::ceil(reach99 / sv)) + 1);
+            // The columns i - wu ... i + wu in order, wrapped on an ellipsoid
+            // (at most two runs, and 2 wu + 1 <= size + 1 of them), clipped
+            // elsewhere.
+            int runs[2][2], run_count = 0;
+            if (!wraps) {
+                runs[0][0] = std::max(0, i - wu), runs[0][1] = std::min(size - 1, i + wu), run_count = 1;
+            } else if (i - wu < 0) {
+                runs[0][0] = i - wu + size, runs[0][1] = size - 1, runs[1][0] = 0, runs[1][1] = i + wu, run_count = 2;
+            } else if (i + wu >= size) {
+                runs[0][0] = i - wu, runs[0][1] = size - 1, runs[1][0] = 0, runs[1][1] = i + wu - size, run_count = 2;
+            } else {
+                runs[0][0] = i - wu, runs[0][1] = i + wu, run_count = 1;
+            }
+            const double qx = px[x], qy = py[x], qz = pz[x];
             std::array<double, 3> sum{0, 0, 0}, weight{0, 0, 0};
             for (int b = std::max(0, j - wv); b <= std::min(size - 1, j + wv); ++b) {
-                for (int a = i - wu; a <= i + wu; ++a) {
-                    int ai = a;
-                    if (wraps) ai = (a % size + size) % size;
-                    else if (a < 0 || a >= size) continue;
-                    const size_t y = size_t(b) * size + size_t(ai);
-                    const double r = glm::length(p[y] - p[x]);
-                    if (!(r < reach99)) continue;
-                    const double f = r / reach * kTable;
-                    const int k = std::min(int(f), kTable - 1);
-                    const double w = f - k;
+                // Each neighbour's terms, independent of the others: the
+                // distance as glm::length computes it ((dx dx + dy dy) + dz dz),
+                // the profile read linearly from its table.
+                size_t m = 0;
+                for (int run = 0; run < run_count; ++run) {
+                    const size_t first = size_t(b) * size + size_t(runs[run][0]);
+                    const int count = runs[run][1] - runs[run][0] + 1;
+                    const double *qx_ = px.data() + first, *qy_ = py.data() + first, *qz_ = pz.data() + first;
+                    const double *a_ = area.data() + first, *al0 = albedo_c[0].data() + first,
+                                 *al1 = albedo_c[1].data() + first, *al2 = albedo_c[2].data() + first;
+                    const double *k0 = kernel_c[0].data(), *k1 = kernel_c[1].data(), *k2 = kernel_c[2].data();
+                    double *w0 = terms.weight[0].data() + m, *w1 = terms.weight[1].data() + m,
+                           *w2 = terms.weight[2].data() + m;
+                    double *s0 = terms.sum[0].data() + m, *s1 = terms.sum[1].data() + m, *s2 = terms.sum[2].data() + m;
+                    unsigned char* in = terms.within.data() + m;
+                    // (No branch: the division is done for every neighbour and
+                    // its result dropped beyond reach99, so that the loop runs
+                    // over the machine's lanes.)
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC ivdep  // the rows' arrays are distinct (clang checks at run time)
+#endif
+                    for (int t = 0; t < count; ++t) {
+                        const double dx = qx_[t] - qx, dy = qy_[t] - qy, dz = qz_[t] - qz;
+                        const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+                        const bool within = r < reach99;
+                        const double f_any = r / reach * kTable;
+                        const double f = within ? f_any : 0.0;
+                        const int k = std::min(int(f), kTable - 1);
+                        const double w = f - k;
+                        const double pr0 = (1 - w) * k0[k] + w * k0[k + 1];
+                        const double pr1 = (1 - w) * k1[k] + w * k1[k + 1];
+                        const double pr2 = (1 - w) * k2[k] + w * k2[k + 1];
+                        w0[t] = pr0 * a_[t], w1[t] = pr1 * a_[t], w2[t] = pr2 * a_[t];
+                        s0[t] = pr0 * a_[t] * al0[t], s1[t] = pr1 * a_[t] * al1[t], s2[t] = pr2 * a_[t] * al2[t];
+                        in[t] = within;
+                    }
+                    m += size_t(count);
+                }
+                // The sums in window order, as one texel after another.
+                for (size_t t = 0; t < m; ++t) {
+                    if (!terms.within[t]) continue;
                     for (int c = 0; c < 3; ++c) {
-                        const double pr = (1 - w) * kernel[size_t(k)][size_t(c)] + w * kernel[size_t(k + 1)][size_t(c)];
-                        sum[size_t(c)] += pr * area[y] * albedo[y][size_t(c)];
-                        weight[size_t(c)] += pr * area[y];
+                        sum[size_t(c)] += terms.sum[c][t];
+                        weight[size_t(c)] += terms.weight[c][t];
                     }
                 }
             }

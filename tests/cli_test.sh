@@ -112,7 +112,7 @@ PY
     # The command on a scene of each kind (every scene's hash against its
     # golden is cli.compare_builtin's, from the same renders), named
     # outputs and mip levels included; a changed hash fails it.
-    scenes="triangles-basic conformance-bloom-chain relief-bloom thin-slab-fragment-backlit thin-slab-sweep profile-skin-head-textured"
+    scenes="triangles-basic conformance-bloom-chain relief-bloom thin-slab-fragment-backlit thin-slab-sweep profile-jade-back"
     "$bin" golden check $scenes >"$work/golden.out" || { cat "$work/golden.out"; fail "golden check failed"; }
     cat "$work/golden.out"
     [ "$(grep -c ' ok$' "$work/golden.out")" -eq "$(grep -cE "\"($(tr ' ' '|' <<<"$scenes"))[:\"]" "$(dirname "$0")/golden/hashes.json")" ] ||
