@@ -13,6 +13,12 @@
 namespace st::optics {
 
 FftGrid::FftGrid(int n, double cell) : n_(n), cell_(cell) {
+    // The kernel's radial table has 64 entries a cell: a cell that is not a
+    // normal positive number (1e-320 mm is denormal, a quarter of it 0) makes
+    // its index arithmetic overflow.
+    if (!(n >= 2) || (n & (n - 1)) != 0) throw std::invalid_argument("FftGrid: the grid must be a power of two >= 2");
+    if (!std::isnormal(cell) || !(cell > 0.0) || !std::isnormal(cell / 64.0))
+        throw std::invalid_argument("FftGrid: the cell must be a positive normal number of mm");
     row_forward_ = kiss_fftr_alloc(n, 0, nullptr, nullptr);
     row_inverse_ = kiss_fftr_alloc(n, 1, nullptr, nullptr);
     col_forward_ = kiss_fft_alloc(n, 0, nullptr, nullptr);

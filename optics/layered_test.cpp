@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "optics/fft_grid.h"
 #include "optics/monte_carlo.h"
 #include "optics/multipole.h"
 
@@ -151,12 +152,14 @@ TEST(Layered, NearlyLosslessStack) {
     }
 }
 
-// A grid far too small for the profile: the totals still come out (the
+// A grid far too small for the profile, though just wide enough to be
+// taken (its kernels reach one reduced mean free path, 0.99 mm; see
+// RefusesAGridTooSmallForTheProfiles): the totals still come out (the
 // kernels are normalised), the tables are finite and non-negative.
 TEST(Layered, GridTooSmallStaysStable) {
     LayeredOptions o;
     o.grid = 16;
-    o.extent = 0.5;  // mm, for a profile that reaches tens of mm
+    o.extent = 4.0;  // mm, for a profile that reaches tens of mm
     const LayeredResult r = combine_layers({layer(0.01, 1.0, 2.0), layer(0.1, 2.0, 1.0)}, o);
     for (const ChannelResult& c : r.channel) {
         EXPECT_TRUE(std::isfinite(c.R) && std::isfinite(c.T));
@@ -175,4 +178,36 @@ TEST(Layered, ChannelsAreIndependent) {
     EXPECT_EQ(r.channel[0].T, 0.0);  // a semi-infinite bottom transmits nothing
 }
 
+}  // namespace st::optics
+
+namespace st::optics {
+namespace {
+
+// A grid whose kernels (a quarter of it) reach less than the most
+// translucent layer's reduced mean free path is refused, before the grid
+// is planned: 1e-320 mm (a cell of 0) read out of bounds, 1e-30 mm gave
+// R = 2e-5 where the default gives 0.44 (issue 26's held-out fuzzing).
+TEST(Layered, RefusesAGridTooSmallForTheProfiles) {
+    const std::vector<LayerSpec> stack{layer(0.1, 4.9, std::numeric_limits<double>::infinity())};  // mfp 0.2 mm
+    for (double extent : {1e-320, 1e-30, 0.79}) {
+        LayeredOptions o;
+        o.extent = extent;
+        EXPECT_THROW(combine_layers(stack, o), std::invalid_argument) << extent;
+    }
+    LayeredOptions o;
+    o.extent = 0.81;
+    const LayeredResult r = combine_layers(stack, o);
+    EXPECT_TRUE(std::isfinite(r.channel[0].R));
+    EXPECT_GT(r.channel[0].profile_cut, 0.0);  // says how much of the profile the small grid left out
+}
+
+TEST(FftGrid, RefusesCellsItCannotIndex) {
+    EXPECT_THROW(FftGrid(256, 1e-320 / 256), std::invalid_argument);
+    EXPECT_THROW(FftGrid(256, 0.0), std::invalid_argument);
+    EXPECT_THROW(FftGrid(256, std::nan("")), std::invalid_argument);
+    EXPECT_THROW(FftGrid(255, 0.1), std::invalid_argument);
+    EXPECT_NO_THROW(FftGrid(256, 0.1));
+}
+
+}  // namespace
 }  // namespace st::optics

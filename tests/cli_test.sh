@@ -1082,6 +1082,17 @@ PY
     expect_slab_error "empty layer list" --layers "$work/empty.json"
     expect_slab_error "layers with a single-layer option" --layers "$work/layers.json" --thickness 1
     expect_slab_error "layers with zero photons" --layers "$work/layers.json" --model mc --photons 0
+    # A grid too small to hold the profiles (issue 26's held-out fuzzing: 1e-320
+    # read out of bounds, 1e-30 answered R = 2e-5 for skin), refused; just
+    # above the bound it answers, and says how much of the profile it cut.
+    for e in 1e-320 1e-30 4; do
+      expect_slab_error "layers on a grid of $e mm" --layers "$(dirname "$0")/../materials/skin-table3.json" --extent "$e"
+      grep -q "extent .* too small.*give at least 4.06" "$work/stderr" || fail "extent $e: $(cat "$work/stderr")"
+    done
+    "$bin" slab --layers "$(dirname "$0")/../materials/skin-table3.json" --extent 4.1 --json >"$work/small.json" ||
+      fail "extent 4.1 refused"
+    python3 -c 'import json,sys; j=json.load(open(sys.argv[1])); assert abs(j["R"][0]-0.4364)<1e-3 and j["profile_cut"][0]>0.1, j' "$work/small.json" ||
+      fail "extent 4.1: R or its cut share is off"
     printf '[{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":"inf"},{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":0,"eta":1,"thickness":1}]' >"$work/inf.json"
     expect_slab_error "infinite layer above another" --layers "$work/inf.json"
     printf '[{"sigma_a":[1,1,1],"sigma_s":[1,1,1],"g":1.5,"eta":1,"thickness":1}]' >"$work/g.json"
