@@ -79,7 +79,10 @@ Texture albedo_texture(const AlbedoMap& map, const ProfileShape& shape, const Bu
         const double v = shape.kind == "ellipsoid" ? std::acos(1.0 - 2.0 * xi) / 3.14159265358979323846 : xi;
         centres.push_back(surface_point(shape, u, v).position);
     }
-    std::vector<std::array<double, 3>> albedo(n, {1.0, 1.0, 1.0});
+    // Per channel (channel-major: the gather below reads one channel's run
+    // of neighbours at a time).
+    std::array<std::vector<double>, 3> albedo;
+    for (std::vector<double>& a : albedo) a.assign(n, 1.0);
     const double r2 = map.radius_mm * map.radius_mm;
     for (size_t x = 0; x < n; ++x) {
         double spot = 0;
@@ -88,18 +91,19 @@ Texture albedo_texture(const AlbedoMap& map, const ProfileShape& shape, const Bu
             const double q = glm::dot(d, d) / r2;
             if (q < 16) spot = std::max(spot, std::exp(-q));
         }
-        for (int c = 0; c < 3; ++c) albedo[x][size_t(c)] = 1.0 - map.strength[size_t(c)] * spot;
+        for (int c = 0; c < 3; ++c) albedo[size_t(c)][x] = 1.0 - map.strength[size_t(c)] * spot;
     }
 
     // The convolution with the profile, within its reach, as a table of the
     // profile per channel in r (the profile's own interpolation is slow).
     const double reach = profiles.r_max;
     constexpr int kTable = 1024;
-    std::vector<std::array<double, 3>> kernel(kTable + 1);
+    std::array<std::vector<double>, 3> kernel;
+    for (std::vector<double>& k : kernel) k.resize(kTable + 1);
     for (int k = 0; k <= kTable; ++k) {
         const double r = reach * k / kTable;
         for (int c = 0; c < 3; ++c)
-            kernel[size_t(k)][size_t(c)] = profiles.R[size_t(c)](r) + (thin ? profiles.T[size_t(c)](r) : 0.0);
+            kernel[size_t(c)][size_t(k)] = profiles.R[size_t(c)](r) + (thin ? profiles.T[size_t(c)](r) : 0.0);
     }
     // The texture's blur needs the profile's body, not its far tail (the
     // gather keeps that): the radius holding 99 % of each channel's weight.
@@ -108,25 +112,17 @@ Texture albedo_texture(const AlbedoMap& map, const ProfileShape& shape, const Bu
         std::vector<double> cumulative(kTable + 1, 0.0);
         for (int k = 1; k <= kTable; ++k) {
             const double r0 = reach * (k - 1) / kTable, r1 = reach * k / kTable;
-            cumulative[size_t(k)] = cumulative[size_t(k - 1)] + 0.5 * (kernel[size_t(k - 1)][size_t(c)] * r0 +
-                                                                      kernel[size_t(k)][size_t(c)] * r1) * (r1 - r0);
+            cumulative[size_t(k)] = cumulative[size_t(k - 1)] + 0.5 * (kernel[size_t(c)][size_t(k - 1)] * r0 +
+                                                                      kernel[size_t(c)][size_t(k)] * r1) * (r1 - r0);
         }
         int k = 0;
         while (k < kTable && cumulative[size_t(k)] < 0.99 * cumulative[kTable]) ++k;
         reach99 = std::max(reach99, reach * k / kTable);
     }
-    // The gather below reads these per neighbour, as separate arrays so
-    // that its first loop runs over the lanes of the machine: positions,
-    // the albedo per channel, and the profile table per channel.
+    // The positions as separate coordinate arrays too, so that the gather's
+    // first loop runs over the lanes of the machine.
     std::vector<double> px(n), py(n), pz(n);
-    std::array<std::vector<double>, 3> albedo_c, kernel_c;
     for (size_t x = 0; x < n; ++x) px[x] = p[x].x, py[x] = p[x].y, pz[x] = p[x].z;
-    for (int c = 0; c < 3; ++c) {
-        albedo_c[size_t(c)].resize(n);
-        for (size_t x = 0; x < n; ++x) albedo_c[size_t(c)][x] = albedo[x][size_t(c)];
-        kernel_c[size_t(c)].resize(kTable + 1);
-        for (int k = 0; k <= kTable; ++k) kernel_c[size_t(c)][size_t(k)] = kernel[size_t(k)][size_t(c)];
-    }
     // One row of a texel's window: each neighbour's share of the weights,
     // whether it lies within reach99, in the order the sums take them.
     struct RowTerms {
@@ -178,9 +174,9 @@ Texture albedo_texture(const AlbedoMap& map, const ProfileShape& shape, const Bu
                     const size_t first = size_t(b) * size + size_t(runs[run][0]);
                     const int count = runs[run][1] - runs[run][0] + 1;
                     const double *qx_ = px.data() + first, *qy_ = py.data() + first, *qz_ = pz.data() + first;
-                    const double *a_ = area.data() + first, *al0 = albedo_c[0].data() + first,
-                                 *al1 = albedo_c[1].data() + first, *al2 = albedo_c[2].data() + first;
-                    const double *k0 = kernel_c[0].data(), *k1 = kernel_c[1].data(), *k2 = kernel_c[2].data();
+                    const double *a_ = area.data() + first, *al0 = albedo[0].data() + first,
+                                 *al1 = albedo[1].data() + first, *al2 = albedo[2].data() + first;
+                    const double *k0 = kernel[0].data(), *k1 = kernel[1].data(), *k2 = kernel[2].data();
                     double *w0 = terms.weight[0].data() + m, *w1 = terms.weight[1].data() + m,
                            *w2 = terms.weight[2].data() + m;
                     double *s0 = terms.sum[0].data() + m, *s1 = terms.sum[1].data() + m, *s2 = terms.sum[2].data() + m;
@@ -218,7 +214,7 @@ Texture albedo_texture(const AlbedoMap& map, const ProfileShape& shape, const Bu
                 }
             }
             for (int c = 0; c < 3; ++c) {
-                const double v = weight[size_t(c)] > 0 ? sum[size_t(c)] / weight[size_t(c)] : albedo[x][size_t(c)];
+                const double v = weight[size_t(c)] > 0 ? sum[size_t(c)] / weight[size_t(c)] : albedo[size_t(c)][x];
                 out[x * 4 + size_t(c)] = float(v);
                 mean[size_t(c)] += v * area[x];
             }
