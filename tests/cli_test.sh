@@ -678,6 +678,17 @@ PY
       fail "intensification does not order the highlights"
     ;;
 
+  regressions)
+    # Every reproducer found beyond the built-in scenes (the explorer's
+    # shrunk cases, tests/regressions/README.md): each must pass its own
+    # criteria on both pipelines.
+    "$bin" compare "$(dirname "$0")"/regressions/*.json --json --out "$work/out" >"$work/regressions.jsonl" ||
+      { grep -v '"pass":true' "$work/regressions.jsonl" | head -3; fail "a regression case fails again"; }
+    n=$(grep -c '"pass":true' "$work/regressions.jsonl")
+    [ "$n" -eq "$(ls "$(dirname "$0")"/regressions/*.json | wc -l)" ] || fail "not every regression case ran"
+    echo "ok   $n regression cases pass"
+    ;;
+
   relief_failures)
     # Where the methods fail (issue 10), each with its outcome on both
     # pipelines (the twin's side, measured against the exact intersection,

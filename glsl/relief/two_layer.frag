@@ -71,7 +71,10 @@ vec3 light_occlusion(vec2 uv, float z, vec3 l, vec2 dx, vec2 dy) {
     float inside = 0.0;  // texture units of the ray inside the medium
     float s0 = 0.0;
     for (int i = 0; i < max_crossings; ++i) {
-        float start = a_liquid + (1.0 - a_liquid) * s0;
+        // z / liquid_depth is 1 - a_liquid as NIR computes it: it rewrites
+        // 1 - (1 - x) as x (docs/llvmpipe/nir-algebraic.md), so the shader
+        // says x and the twin computes the same.
+        float start = a_liquid + (z / liquid_depth) * s0;
         bool crossed;
         float s = trace_segment(liquid_map, uv + offset * s0, offset * (1.0 - s0), start, 1.0 - start, side, dx,
                                 dy, linear_steps, binary_steps, false, crossed);
@@ -168,8 +171,10 @@ void main() {
             hit = a < plane_height;
             s_up = hit ? (plane_height - a) / (1.0 - a) : 1.0;
         } else {
-            s_up = trace_segment(relief_map, at_uv, up_offset, a, 1.0 - a, 1.0, dx, dy, linear_steps, binary_steps,
-                                 secant, hit);
+            // The rise to the top, 1 - a, written as NIR computes it
+            // (1 - (1 - x) is x; docs/llvmpipe/nir-algebraic.md).
+            s_up = trace_segment(relief_map, at_uv, up_offset, a, z_liquid / depth, 1.0, dx, dy, linear_steps,
+                                 binary_steps, secant, hit);
         }
         vec3 local = shade_solid(at_uv + up_offset * s_up, at + reflected * (s_up * up * world_per_uv),
                                  z_liquid - z_liquid * s_up, -reflected, dx, dy);

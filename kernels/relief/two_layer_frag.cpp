@@ -60,7 +60,8 @@ Vec3 TwoLayerFragment::light_occlusion(Exec& exec, const Vec2& uv, Float z, cons
     Int i = 0;
     exec.loop([&](Loop& loop) {
         loop.break_if(!(i < Int(max_crossings_)));
-        const Float start = a_liquid + (Float(1.0f) - a_liquid) * s0;
+        // 1 - a_liquid as NIR computes it (the GLSL says why).
+        const Float start = a_liquid + (z / Float(liquid_depth_)) * s0;
         Mask crossed;
         const Float s = relief::trace_segment(exec, *liquid_map_, uv + offset * s0, offset * (Float(1.0f) - s0), start,
                                               Float(1.0f) - start, side, dx, dy, linear_steps_, binary_steps_, false,
@@ -153,7 +154,7 @@ Vec4 TwoLayerFragment::main(const Fragment& frag) const {
                 hit = a < plane;
                 s_up = glsl::select(hit, (plane - a) / (Float(1.0f) - a), Float(1.0f));
             } else {
-                s_up = relief::trace_segment(exec, *u_.relief_map, at_uv, up_offset, a, Float(1.0f) - a, Float(1.0f),
+                s_up = relief::trace_segment(exec, *u_.relief_map, at_uv, up_offset, a, z_liquid / Float(depth_), Float(1.0f),
                                              dx, dy, linear_steps_, binary_steps_, secant_, hit);
             }
             const Vec3 local = shade_solid(exec, at_uv + up_offset * s_up,
