@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "scene/input_error.h"
+#include "scene/param_space.h"
 
 namespace st {
 
@@ -181,18 +183,109 @@ std::vector<double> JsonReader::numbers(const std::string& key, size_t min_len, 
     return out;
 }
 
-JsonReader JsonReader::object(const std::string& key) { return JsonReader(get(key), field(key)); }
+// An opaque object (the criteria) is read by its own code, unbound.
+bool JsonReader::inherits(const std::string& key) const { return space_ && !spec(key).opaque; }
+
+JsonReader JsonReader::child(const nlohmann::json& value, bool bound, std::string path) const {
+    JsonReader r(value, std::move(path));
+    if (bound) r.space_ = space_;
+    return r;
+}
+
+JsonReader JsonReader::object(const std::string& key) { return child(get(key), inherits(key), field(key)); }
 
 std::optional<JsonReader> JsonReader::object_if(const std::string& key) {
     if (!has(key)) return std::nullopt;
     return object(key);
 }
 
+JsonReader JsonReader::object_or_defaults(const std::string& key) {
+    static const nlohmann::json empty = nlohmann::json::object();
+    return has(key) ? object(key) : child(empty, inherits(key), field(key));
+}
+
 std::vector<JsonReader> JsonReader::objects(const std::string& key, size_t min_len, size_t max_len) {
     const nlohmann::json& v = array(key, min_len, max_len);
     std::vector<JsonReader> out;
-    for (size_t i = 0; i < v.size(); ++i) out.emplace_back(v[i], field(key) + "." + std::to_string(i));
+    const bool bound = inherits(key);
+    for (size_t i = 0; i < v.size(); ++i) out.push_back(child(v[i], bound, field(key) + "." + std::to_string(i)));
     return out;
+}
+
+const FieldSpec& JsonReader::spec(const std::string& key) const {
+    if (!space_) throw std::logic_error("field '" + field(key) + "' read through a space, but the reader has none");
+    return space_->at(field(key));
+}
+
+namespace {
+
+// A declared field's default, of the type asked for.
+const nlohmann::json& declared_default(const FieldSpec& f, const std::string& where) {
+    if (f.required) throw InputError("missing field '" + where + "'");
+    if (f.fallback.is_null())
+        throw std::logic_error("field '" + where + "' has no default: its builder must check has() first");
+    return f.fallback;
+}
+
+void expect_type(const FieldSpec& f, FieldType type, const std::string& where) {
+    if (f.type != type) throw std::logic_error("field '" + where + "' is declared as " + f.type_text());
+}
+
+}  // namespace
+
+double JsonReader::number(const std::string& key) {
+    const FieldSpec& f = spec(key);
+    expect_type(f, FieldType::Number, field(key));
+    if (!f.lo_field.empty() || !f.hi_field.empty())
+        throw std::logic_error("field '" + field(key) + "' has bounds from other fields: read it with number_in");
+    return has(key) ? number(key, f.lo, f.hi) : declared_default(f, field(key)).get<double>();
+}
+
+double JsonReader::number_in(const std::string& key, double lo, double hi) {
+    const FieldSpec& f = spec(key);
+    expect_type(f, FieldType::Number, field(key));
+    return has(key) ? number(key, std::max(lo, f.lo), std::min(hi, f.hi)) : declared_default(f, field(key)).get<double>();
+}
+
+int JsonReader::integer(const std::string& key) {
+    const FieldSpec& f = spec(key);
+    expect_type(f, FieldType::Integer, field(key));
+    if (!f.lo_field.empty() || !f.hi_field.empty())
+        throw std::logic_error("field '" + field(key) + "' has bounds from other fields: read it with integer_in");
+    return has(key) ? integer(key, int(f.lo), int(f.hi)) : declared_default(f, field(key)).get<int>();
+}
+
+int JsonReader::integer_in(const std::string& key, int lo, int hi) {
+    const FieldSpec& f = spec(key);
+    expect_type(f, FieldType::Integer, field(key));
+    return has(key) ? integer(key, std::max(lo, int(f.lo)), std::min(hi, int(f.hi)))
+                    : declared_default(f, field(key)).get<int>();
+}
+
+bool JsonReader::boolean(const std::string& key) {
+    const FieldSpec& f = spec(key);
+    expect_type(f, FieldType::Boolean, field(key));
+    return boolean_or(key, f.fallback.get<bool>());
+}
+
+std::string JsonReader::choice(const std::string& key) {
+    const FieldSpec& f = spec(key);
+    expect_type(f, FieldType::Choice, field(key));
+    if (!has(key)) return declared_default(f, field(key)).get<std::string>();
+    return choice_or(key, f.choices.front(), f.choices);
+}
+
+std::vector<double> JsonReader::numbers(const std::string& key) {
+    const FieldSpec& f = spec(key);
+    expect_type(f, FieldType::Numbers, field(key));
+    if (!has(key)) return declared_default(f, field(key)).get<std::vector<double>>();
+    return numbers(key, f.min_len, f.max_len, f.lo, f.hi);
+}
+
+std::string JsonReader::text(const std::string& key) {
+    const FieldSpec& f = spec(key);
+    expect_type(f, FieldType::Text, field(key));
+    return has(key) ? string(key) : declared_default(f, field(key)).get<std::string>();
 }
 
 void JsonReader::finish() const {

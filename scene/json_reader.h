@@ -29,9 +29,31 @@ nlohmann::json parse_json(const std::string& text, const std::string& what);
 // uniform): beyond +-1e30 a value is a typo, and infinities stay out.
 inline constexpr double kHuge = 1e30;
 
+class ParamSpace;
+struct FieldSpec;
+
 class JsonReader {
 public:
     JsonReader(const nlohmann::json& object, std::string path);
+
+    // Reads through a declared space (scene/param_space.h): the one-argument
+    // accessors below take the field's type, domain and default from it.
+    // Readers of its objects inherit it.
+    void bind(const ParamSpace& space) { space_ = &space; }
+    const ParamSpace* space() const { return space_; }
+    const FieldSpec& spec(const std::string& key) const;
+    // A declared field: its value, or its default when absent (a missing
+    // required field is an error naming it).
+    double number(const std::string& key);
+    int integer(const std::string& key);
+    bool boolean(const std::string& key);
+    std::string choice(const std::string& key);
+    std::vector<double> numbers(const std::string& key);
+    std::string text(const std::string& key);
+    // A declared field whose bounds are other fields' values (the spec's
+    // at_least/at_most): [lo, hi] as those values are, within the domain.
+    double number_in(const std::string& key, double lo, double hi);
+    int integer_in(const std::string& key, int lo, int hi);
 
     bool has(const std::string& key) const;
     double number(const std::string& key, double lo, double hi);
@@ -49,6 +71,9 @@ public:
                                 double hi);
     JsonReader object(const std::string& key);
     std::optional<JsonReader> object_if(const std::string& key);
+    // The object at `key`, or an empty one when absent, so that a bound
+    // reader's fields take their declared defaults either way.
+    JsonReader object_or_defaults(const std::string& key);
     std::vector<JsonReader> objects(const std::string& key, size_t min_len, size_t max_len);
     // The same, one object at a time: for arrays as long as a mesh's
     // triangles, whose readers need not all exist at once.
@@ -76,8 +101,13 @@ public:
 
 private:
     const nlohmann::json& get(const std::string& key);
+    // A reader of one of this object's objects: bound to the space unless
+    // that object is opaque (`bound` is inherits(key), computed once per array).
+    bool inherits(const std::string& key) const;
+    JsonReader child(const nlohmann::json& value, bool bound, std::string path) const;
     const nlohmann::json& object_;
     std::string path_;
+    const ParamSpace* space_ = nullptr;
     std::vector<const nlohmann::json*> read_;  // the members read (an object has a handful)
 };
 
@@ -85,8 +115,9 @@ template <class Visit>
 void JsonReader::for_each_object(const std::string& key, size_t min_len, size_t max_len, Visit&& visit) {
     const nlohmann::json& v = array(key, min_len, max_len);
     const std::string prefix = field(key) + ".";
+    const bool bound = inherits(key);
     for (size_t i = 0; i < v.size(); ++i) {
-        JsonReader item(v[i], prefix + std::to_string(i));
+        JsonReader item = child(v[i], bound, prefix + std::to_string(i));
         visit(item);
     }
 }

@@ -21,8 +21,6 @@ namespace st {
 
 namespace {
 
-constexpr int kMaxLinearSteps = 512, kMaxBinarySteps = 32, kMaxCrossings = 16;
-
 struct View {
     glm::dvec3 eye, forward, right, up;
     double tan_half_x, tan_half_y;
@@ -150,21 +148,21 @@ Frame with_bloom(Pass scene_pass, SceneSize size, float threshold, float strengt
 }  // namespace
 
 Frame build_relief_scene(JsonReader& scene, SceneSize size) {
-    const std::string technique = scene.choice_or("technique", "relief", {"normal-mapping", "relief", "two-layer", "occlusion", "absorption"});
+    const std::string technique = scene.choice("technique");
 
     // The camera: `distance` from the origin, `angle_deg` from the surface
     // normal (0 looks straight down), `azimuth_deg` around it.
     JsonReader view_r = scene.object("view");
-    const double theta = view_r.number_or("angle_deg", 45.0, 0.0, 89.0) * std::numbers::pi / 180.0;
-    const double phi = view_r.number_or("azimuth_deg", 0.0, -360.0, 360.0) * std::numbers::pi / 180.0;
-    const double distance = view_r.number_or("distance", 2.0, 1e-3, 1e3);
-    const double fov = view_r.number_or("fov_deg", 45.0, 1.0, 120.0) * std::numbers::pi / 180.0;
+    const double theta = view_r.number("angle_deg") * std::numbers::pi / 180.0;
+    const double phi = view_r.number("azimuth_deg") * std::numbers::pi / 180.0;
+    const double distance = view_r.number("distance");
+    const double fov = view_r.number("fov_deg") * std::numbers::pi / 180.0;
     // 0: the surface must cover the screen (Table 1's measurements).
-    const double horizon = view_r.number_or("horizon_distance", 0.0, 0.0, 1e4);
+    const double horizon = view_r.number("horizon_distance");
     view_r.finish();
 
     JsonReader light_r = scene.object("light");
-    const std::vector<double> lp = light_r.numbers("position", 3, 3, -1e6, 1e6);
+    const std::vector<double> lp = light_r.numbers("position");
     light_r.finish();
 
     JsonReader surface_r = scene.object("surface");
@@ -177,40 +175,36 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
     // "file": the heights from an image (its red channel, in [0, 1]; a path
     // relative to the working directory), square, with the stones' colours;
     // its size is the map size.
-    const std::string heights = surface_r.choice_or("heights", "stones", {"stones", "flat", "walls", "file"});
+    const std::string heights = surface_r.choice("heights");
     HeightField from_file;
     if (heights == "file") {
-        from_file = height_map_file(surface_r.string("height_map"));
+        from_file = height_map_file(surface_r.text("height_map"));
         stones.size = from_file.size;
         // A scene may keep its map_size (the built-in ones do) if it agrees.
-        if (surface_r.has("map_size") && surface_r.integer("map_size", 4, 4096) != stones.size)
+        if (surface_r.has("map_size") && surface_r.integer("map_size") != stones.size)
             throw InputError("field 'surface.map_size' is not the height map's size (" + std::to_string(stones.size) +
                              ")");
     } else {
-        stones.size = surface_r.integer_or("map_size", 256, 4, 4096);
+        stones.size = surface_r.integer("map_size");
     }
-    stones.cells = surface_r.integer_or("stones", 5, 1, 64);
-    stones.seed = uint32_t(surface_r.integer_or("seed", 1, 0, 1 << 30));
-    const double depth = surface_r.number_or("depth", 0.08, 0.0, 10.0);  // in texture coordinates
-    const double uv_per_unit = surface_r.number_or("uv_per_unit", 1.0, 1e-3, 1e3);
+    stones.cells = surface_r.integer("stones");
+    stones.seed = uint32_t(surface_r.integer("seed"));
+    const double depth = surface_r.number("depth");  // in texture coordinates
+    const double uv_per_unit = surface_r.number("uv_per_unit");
     const bool flat = heights == "flat";
-    const double flat_height = flat ? surface_r.number_or("flat_height", 0.5, 0.0, 1.0) : 0.0;
-    const int wall_spacing = heights == "walls" ? surface_r.integer_or("wall_spacing", 16, 2, stones.size) : 0;
+    const double flat_height = flat ? surface_r.number("flat_height") : 0.0;
+    const int wall_spacing = heights == "walls" ? surface_r.integer_in("wall_spacing", 2, stones.size) : 0;
     surface_r.finish();
 
-    // The search (relief and later rows); steps above kMax* are refused
-    // rather than run for seconds.
-    int linear_steps = 16, binary_steps = 6, min_linear_steps = 0;
-    bool secant = true;
-    if (auto search = scene.object_if("search")) {
-        linear_steps = search->integer_or("linear_steps", linear_steps, 1, kMaxLinearSteps);
-        binary_steps = search->integer_or("binary_steps", binary_steps, 0, kMaxBinarySteps);
-        secant = search->boolean_or("secant", secant);
-        // Row 2 only: the count scaled by the view angle (relief_mapping.frag).
-        if (technique == "relief")
-            min_linear_steps = search->integer_or("min_linear_steps", 0, 0, linear_steps);
-        search->finish();
-    }
+    // The search (relief and later rows); its domains (scene/relief_space.cpp)
+    // refuse step counts that would run for seconds.
+    JsonReader search = scene.object_or_defaults("search");
+    const int linear_steps = search.integer("linear_steps");
+    const int binary_steps = search.integer("binary_steps");
+    const bool secant = search.boolean("secant");
+    // Row 2 only: the count scaled by the view angle (relief_mapping.frag).
+    const int min_linear_steps = technique == "relief" ? search.integer_in("min_linear_steps", 0, linear_steps) : 0;
+    search.finish();
 
     // The translucent medium and the environment (two-layer and later rows).
     // Rows 3-5 are one shader family, each row switching on what it adds.
@@ -224,22 +218,22 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
     glm::vec3 half_distance(1.0f);
     if (two_layer) {
         JsonReader liquid_r = scene.object("liquid");
-        liquid_depth = liquid_r.number_or("depth", liquid_depth, 1e-4, 10.0);
-        ior = liquid_r.number_or("ior", ior, 1e-3, 10.0);
-        drops.drops = liquid_r.integer_or("drops", drops.drops, 0, 1000);
-        drops.seed = uint32_t(liquid_r.integer_or("seed", 2, 0, 1 << 30));
-        drops.level = liquid_r.number_or("level", drops.level, 0.0, 1.0);
-        drops.min_radius = liquid_r.number_or("min_radius", drops.min_radius, 1e-3, 0.5);
-        drops.max_radius = liquid_r.number_or("max_radius", drops.max_radius, drops.min_radius, 0.5);
-        drops.min_peak = liquid_r.number_or("min_peak", drops.min_peak, drops.level, 1.0);
-        drops.max_peak = liquid_r.number_or("max_peak", drops.max_peak, drops.min_peak, 1.0);
+        liquid_depth = liquid_r.number("depth");
+        ior = liquid_r.number("ior");
+        drops.drops = liquid_r.integer("drops");
+        drops.seed = uint32_t(liquid_r.integer("seed"));
+        drops.level = liquid_r.number("level");
+        drops.min_radius = liquid_r.number("min_radius");
+        drops.max_radius = liquid_r.number_in("max_radius", drops.min_radius, 0.5);
+        drops.min_peak = liquid_r.number_in("min_peak", drops.level, 1.0);
+        drops.max_peak = liquid_r.number_in("max_peak", drops.min_peak, 1.0);
         if (absorption) {
-            const std::vector<double> d0 = liquid_r.numbers("half_distance", 3, 3, 1e-6, 1e6);
+            const std::vector<double> d0 = liquid_r.numbers("half_distance");
             half_distance = glm::vec3(float(d0[0]), float(d0[1]), float(d0[2]));
         }
         if (occlusion) {
-            max_crossings = liquid_r.integer_or("max_crossings", max_crossings, 1, kMaxCrossings);
-            shadow_bias = liquid_r.number_or("shadow_bias", shadow_bias, 0.0, 1.0);
+            max_crossings = liquid_r.integer("max_crossings");
+            shadow_bias = liquid_r.number("shadow_bias");
         }
         liquid_r.finish();
     }
@@ -248,21 +242,20 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
     bool planar = false;
     double plane_height = 0.5;
     if (two_layer) {
-        if (auto refl = scene.object_if("reflections")) {
-            planar = refl->boolean_or("planar", planar);
-            plane_height = refl->number_or("plane_height", plane_height, 0.0, 1.0);
-            refl->finish();
-        }
+        JsonReader refl = scene.object_or_defaults("reflections");
+        planar = refl.boolean("planar");
+        plane_height = refl.number("plane_height");
+        refl.finish();
     }
     int sky_size = 64;
     std::vector<double> sun{0.4, 0.3, 0.6};
     double sun_radiance = 30.0, sun_radius = 2.0;
     if (two_layer) {
         JsonReader env_r = scene.object("environment");
-        sky_size = env_r.integer_or("size", sky_size, 1, 2048);
-        if (env_r.has("sun_direction")) sun = env_r.numbers("sun_direction", 3, 3, -1e6, 1e6);
-        sun_radiance = env_r.number_or("sun_radiance", sun_radiance, 0.0, 65000.0);
-        sun_radius = env_r.number_or("sun_radius_deg", sun_radius, 0.0, 90.0);
+        sky_size = env_r.integer("size");
+        sun = env_r.numbers("sun_direction");
+        sun_radiance = env_r.number("sun_radiance");
+        sun_radius = env_r.number("sun_radius_deg");
         env_r.finish();
         if (!(sun[0] * sun[0] + sun[1] * sun[1] + sun[2] * sun[2] > 0.0))
             throw InputError("field 'environment.sun_direction' must not be the zero vector");
@@ -274,9 +267,9 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
     double bloom_threshold = 1.0, bloom_strength = 1.0;
     if (two_layer) {
         if (auto bloom_r = scene.object_if("bloom")) {
-            bloom = bloom_r->boolean_or("enabled", true);
-            bloom_threshold = bloom_r->number_or("threshold", bloom_threshold, 0.0, 65000.0);
-            bloom_strength = bloom_r->number_or("strength", bloom_strength, 0.0, 1000.0);
+            bloom = bloom_r->boolean("enabled");
+            bloom_threshold = bloom_r->number("threshold");
+            bloom_strength = bloom_r->number("strength");
             bloom_r->finish();
         }
         if (bloom && (size.width < 8 || size.height < 8))
@@ -284,11 +277,11 @@ Frame build_relief_scene(JsonReader& scene, SceneSize size) {
     }
 
     JsonReader shading_r = scene.object("shading");
-    const float ambient = float(shading_r.number_or("ambient", 0.15, 0.0, 10.0));
-    const float specular = float(shading_r.number_or("specular", 0.35, 0.0, 100.0));
+    const float ambient = float(shading_r.number("ambient"));
+    const float specular = float(shading_r.number("specular"));
     // The medium's highlight (rows 3-5 and later): off unless asked for.
-    const float liquid_specular = two_layer ? float(shading_r.number_or("liquid_specular", 0.0, 0.0, 1000.0)) : 0.0f;
-    const bool intensify = two_layer && shading_r.boolean_or("intensify", false);
+    const float liquid_specular = two_layer ? float(shading_r.number("liquid_specular")) : 0.0f;
+    const bool intensify = two_layer && shading_r.boolean("intensify");
     shading_r.finish();
 
     View v;

@@ -8,6 +8,7 @@
 
 #include "scene/input_error.h"
 #include "scene/json_reader.h"
+#include "scene/param_space.h"
 #include "scene/scene_kinds.h"
 #include "scene/scene_sources.h"
 
@@ -155,6 +156,8 @@ Scene load_scene_document(const std::string& name, nlohmann::json document, cons
         }
         JsonReader r(scene.document, "");
         scene.kind = r.string("kind");
+        // A kind with a declared space reads every field through it.
+        if (const ParamSpace* space = kind_space(scene.kind)) r.bind(*space);
         scene.description = r.string_or("description", "");
         const SceneSize size{r.integer("width", 1, kMaxResolution), r.integer("height", 1, kMaxResolution)};
         scene.criteria = Criteria::read(r);
