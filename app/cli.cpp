@@ -11,6 +11,8 @@
 #include <iostream>
 
 #include "app/commands.h"
+#include "app/commands/explore.h"
+#include "app/commands/fields.h"
 #include "app/error_line.h"
 #include "app/output_provenance.h"
 #include "app/memory_budget.h"
@@ -213,6 +215,26 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
                      "the Markdown tables, which DIR/summary.md keeps");
     add_common(report, common, gl_given);
 
+    st::ExploreOptions explore_options;
+    auto* explore = app.add_subcommand(
+        "explore", "settings nobody chose: fields drawn from each scene kind's declared space, compared on both "
+                   "backends; failures shrunk to the fewest fields and written as scene files");
+    explore->add_option("targets", explore_options.targets,
+                        "scene kinds (relief, thin-slab, ...), scene names or .json paths; default: every kind");
+    explore->add_option("--seed", explore_options.seed, "the draws' seed");
+    explore->add_option("--cases", explore_options.cases, "at most this many cases")->check(CLI::Range(1L, 100000000L));
+    explore->add_option("--time", explore_options.seconds, "start no case after this many seconds (0: no limit)")
+        ->check(CLI::Range(0.0, 1e7));
+    explore->add_option("--fields", explore_options.max_fields, "fields changed per case: 1 to this")
+        ->check(CLI::Range(1, 32));
+    explore->add_option("--out", explore_options.out_dir, "output folder: summary.json, reproducers/, failing cases' images");
+    explore->add_flag("--json", explore_options.json, "the summary as one JSON object on stdout");
+    add_common(explore, common, gl_given);
+
+    std::vector<std::string> field_kinds;
+    auto* fields = app.add_subcommand("fields", "each scene kind's fields, types, domains and defaults (Markdown)");
+    fields->add_option("kinds", field_kinds, "scene kinds; default: every kind with a declared space");
+
     // An empty value is no number (CLI11 would take it as 0): every numeric
     // option of every command checks that its value parses as one.
     const CLI::Validator not_empty(
@@ -268,6 +290,8 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
             return rc;
         }
         if (*figures) return st::cmd_optics_figures(out_dir, figure_photons, figure_threads);
+        if (*explore) return st::cmd_explore(explore_options, common);
+        if (*fields) return st::cmd_fields(field_kinds);
         if (*bench) return st::cmd_bench(scenes, frames, json, scaling, per_pass, common);
         if (*sweep) {
             if (technique == "relief") return st::cmd_sweep_relief(out_dir, sweep_frames, common);

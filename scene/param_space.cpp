@@ -2,6 +2,7 @@
 #include "scene/param_space.h"
 
 #include <cctype>
+#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
@@ -11,10 +12,17 @@ namespace st {
 
 namespace {
 
+// 1073741824, 0.001, 1e6, 1e-30: as a reader writes them.
 std::string short_number(double x) {
-    std::ostringstream s;
-    s << x;
-    return s.str();
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.10g", x);
+    std::string s = buf;
+    const auto e = s.find('e');
+    if (e == std::string::npos) return s;
+    std::string mantissa = s.substr(0, e), exponent = s.substr(e + 1);
+    const bool negative = exponent[0] == '-';
+    exponent.erase(0, exponent.find_first_not_of("+-0"));
+    return mantissa + "e" + (negative ? "-" : "") + exponent;
 }
 
 std::string fallback_text(const FieldSpec& f) {

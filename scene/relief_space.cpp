@@ -53,7 +53,9 @@ const ParamSpace& relief_space() {
 
         s.object("liquid", true, "the translucent medium").when("technique", two_layer);
         s.number("liquid.depth", 1e-4, 10, 0.1, "its box's depth in texture coordinates").draws(1e-3, 0.5);
-        s.number("liquid.ior", 1e-3, 10, 1.33, "index of refraction").draws(1, 2.5).edge({1, 1.0001});
+        s.number("liquid.ior", 1e-3, 10, 1.33, "index of refraction relative to air (below 1: thinner than air, the view ray totally reflected past an angle)")
+            .draws(0.5, 2.5)
+            .edge({1, 1.0001});
         s.integer("liquid.drops", 0, 1000, 14, "drops on the film").explore_at_most(100);
         s.integer("liquid.seed", 0, 1 << 30, 2, "the drops' layout");
         s.number("liquid.level", 0, 1, 0.25, "the film between the drops (0: none above the floor)");

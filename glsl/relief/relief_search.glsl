@@ -49,11 +49,15 @@ float trace_segment(sampler2D map, vec2 uv, vec2 offset, float a, float dh, floa
     }
     // Before the crossing at s_lo (d_lo >= 0), past it at s_hi (d_hi <= 0)
     // when there is a hit; when the line has no zero in the bracket, s_hi
-    // stands.
+    // stands. A segment that starts past the surface already (d_lo < 0: a
+    // refracted ray leaving a medium's hit below the solid layer) would put
+    // the line's zero behind its start, and a negative length through the
+    // medium then absorbs to infinity: the zero is kept within the bracket.
     float d_lo = side * ((a + dh * s_lo) - h_lo);
     float d_hi = side * ((a + dh * s_hi) - h_hi);
     float denom = d_lo - d_hi;
-    float s_secant = denom > 0.0 ? s_lo + (s_hi - s_lo) * (d_lo / denom) : s_hi;
+    float s_line = s_lo + (s_hi - s_lo) * (d_lo / denom);
+    float s_secant = denom > 0.0 ? min(max(s_line, s_lo), s_hi) : s_hi;
     return secant && hit ? s_secant : s_hi;
 }
 

@@ -169,7 +169,8 @@ void main() {
             // Rising from a to 1: the plane from below where the ray starts
             // under it, else the environment.
             hit = a < plane_height;
-            s_up = hit ? (plane_height - a) / (1.0 - a) : 1.0;
+            // 1 - a as NIR computes it (see the searched rise below).
+            s_up = hit ? (plane_height - a) / (z_liquid / depth) : 1.0;
         } else {
             // The rise to the top, 1 - a, written as NIR computes it
             // (1 - (1 - x) is x; docs/llvmpipe/nir-algebraic.md).

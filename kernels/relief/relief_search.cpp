@@ -52,7 +52,8 @@ Float trace_segment(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2
     const Float d_lo = side * ((a + dh * s_lo) - h_lo);
     const Float d_hi = side * ((a + dh * s_hi) - h_hi);
     const Float denom = d_lo - d_hi;
-    const Float s_secant = glsl::select(denom > Float(0.0f), s_lo + (s_hi - s_lo) * (d_lo / denom), s_hi);
+    const Float s_line = s_lo + (s_hi - s_lo) * (d_lo / denom);
+    const Float s_secant = glsl::select(denom > Float(0.0f), glsl::min(glsl::max(s_line, s_lo), s_hi), s_hi);
     return glsl::select(Mask(secant) && hit, s_secant, s_hi);
 }
 

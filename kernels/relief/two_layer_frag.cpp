@@ -152,7 +152,7 @@ Vec4 TwoLayerFragment::main(const Fragment& frag) const {
             Float s_up;
             if (planar_) {
                 hit = a < plane;
-                s_up = glsl::select(hit, (plane - a) / (Float(1.0f) - a), Float(1.0f));
+                s_up = glsl::select(hit, (plane - a) / (z_liquid / Float(depth_)), Float(1.0f));
             } else {
                 s_up = relief::trace_segment(exec, *u_.relief_map, at_uv, up_offset, a, z_liquid / Float(depth_), Float(1.0f),
                                              dx, dy, linear_steps_, binary_steps_, secant_, hit);
