@@ -160,7 +160,10 @@ nlohmann::json ParamSampler::draw_value(const FieldSpec& f, const std::string& p
         return std::clamp((long long)std::llround(x), ilo, ihi);
     }
     case FieldType::Boolean: return rng.chance(0.5);
-    case FieldType::Choice: return f.choices[rng.below(f.choices.size())];
+    case FieldType::Choice: {
+        const std::vector<std::string>& c = f.drawn_choices.empty() ? f.choices : f.drawn_choices;
+        return c[rng.below(c.size())];
+    }
     case FieldType::Numbers: {
         size_t len = f.min_len;
         if (const nlohmann::json* v = json_at(doc, path); v && v->is_array() && v->size() >= f.min_len &&
@@ -237,12 +240,16 @@ nlohmann::json ParamSampler::apply(const nlohmann::json& base, const std::vector
                 json_set(doc, f.path, draw_value(f, f.path, doc, rng, false));
             continue;
         }
-        if (v && v->is_number() && (!f.lo_field.empty() || !f.hi_field.empty())) {
-            double x = v->get<double>();
+        // The value or, absent, its default: either may be outside a bound
+        // another field's new value sets (max_radius's default under a
+        // drawn min_radius).
+        const nlohmann::json current = v ? *v : f.fallback;
+        if (parent_present && current.is_number() && (!f.lo_field.empty() || !f.hi_field.empty())) {
+            double x = current.get<double>();
             const nlohmann::json lo = value_or_default(doc, f.lo_field), hi = value_or_default(doc, f.hi_field);
             if (!f.lo_field.empty() && lo.is_number()) x = std::max(x, lo.get<double>());
             if (!f.hi_field.empty() && hi.is_number()) x = std::min(x, hi.get<double>());
-            if (x != v->get<double>())
+            if (x != current.get<double>())
                 json_set(doc, f.path, f.type == FieldType::Integer ? nlohmann::json((long long)std::floor(x)) : nlohmann::json(x));
         }
     }

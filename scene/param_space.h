@@ -68,6 +68,10 @@ struct FieldSpec {
     FieldSpec& not_explored() { explore = false; return *this; }
     FieldSpec& opaque_object() { opaque = true, explore = false; return *this; }
     FieldSpec& explore_at_most(double hi_) { explore_hi = hi_; return *this; }
+    // A choice the explorer draws only from these (a value that needs a
+    // file, which it cannot make up, left out).
+    FieldSpec& explore_choices(std::vector<std::string> c) { drawn_choices = std::move(c); return *this; }
+    std::vector<std::string> drawn_choices;
 
     // The domain as docs and error messages say it: "1..512", "[0, 89]",
     // "one of a, b", "3 numbers in [-1e6, 1e6]".

@@ -30,7 +30,8 @@ const ParamSpace& relief_space() {
 
         s.object("surface", true, "the solid layer's height field");
         s.choice("surface.heights", {"stones", "flat", "walls", "file"}, "stones",
-                 "stones; one height everywhere; one-texel walls; or an image's red channel");
+                 "stones; one height everywhere; one-texel walls; or an image's red channel")
+            .explore_choices({"stones", "flat", "walls"});
         s.text("surface.height_map", "required", "the image (a path), square, 4 to 4096 texels a side")
             .when("surface.heights", {"file"});
         s.integer("surface.map_size", 4, 4096, 256, "texels a side").explore_at_most(1024).edge({4, 5, 64, 255, 256});

@@ -689,6 +689,44 @@ PY
     echo "ok   $n regression cases pass"
     ;;
 
+  scene_docs)
+    # docs/scenes.md holds each kind's field table as its space declares it.
+    bash "$(dirname "$0")/../scripts/update-scene-docs.sh" "$bin" --check
+    # Every kind with a space has a table.
+    for k in $("$bin" fields | sed -n 's/^<!-- fields \(.*\) -->$/\1/p'); do
+      grep -q "^<!-- fields $k -->" "$(dirname "$0")/../docs/scenes.md" || fail "no field table for $k"
+    done
+    ;;
+
+  explore)
+    # A fixed-seed run of the explorer over every kind with a declared
+    # space (small frames: test.sh's time): no case may fail or crash.
+    "$bin" explore --seed 26 --cases 40 --set width=96 --set height=72 --json --out "$work/explore" >"$work/summary.json" ||
+      { python3 -m json.tool "$work/summary.json" | head -60; fail "explore found a failing case"; }
+    python3 - "$work/summary.json" "$("$bin" fields | grep -c '^<!-- fields ')" <<'PY' || fail "explore's summary is not what it should be"
+import json, sys
+s = json.load(open(sys.argv[1])); kinds = int(sys.argv[2])
+assert s["seed"] == 26 and s["cases"] == 40, s
+assert len(s["kinds"]) == kinds, (sorted(s["kinds"]), kinds)
+for k, c in s["kinds"].items():
+    assert c["cases"] > 0 and c["pass"] + c["refused"] == c["cases"], (k, c)
+    assert c["pass"] >= c["cases"] // 2, (k, c)   # draws mostly inside what renders
+print("ok   explore: %d cases over %d kinds, %s" % (s["cases"], len(s["kinds"]),
+      ", ".join("%s %d/%d refused" % (k, c["refused"], c["cases"]) for k, c in sorted(s["kinds"].items()))))
+PY
+    # The same seed draws the same cases.
+    "$bin" explore --seed 26 --cases 6 --set width=96 --set height=72 --json --out "$work/again" >"$work/again.json"
+    python3 - "$work/summary.json" "$work/again.json" <<'PY' || fail "the same seed drew different cases"
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+for k in b["kinds"]:
+    assert b["kinds"][k]["refusals"].keys() <= a["kinds"][k]["refusals"].keys(), k
+PY
+    # Bad options: one line, exit 2.
+    expect_bad_input "explore of a kind without a space" "$bin" explore no-such-kind --cases 1
+    expect_bad_input "explore --cases 0" "$bin" explore relief --cases 0
+    ;;
+
   relief_failures)
     # Where the methods fail (issue 10), each with its outcome on both
     # pipelines (the twin's side, measured against the exact intersection,
