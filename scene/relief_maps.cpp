@@ -27,12 +27,24 @@ double smoothstep01(double t) {
     return t * t * (3.0 - 2.0 * t);
 }
 
-// Value noise on a lattice of `period` cells per side, tileable.
-double tiled_noise(uint32_t seed, double x, double y, int period) {
+// Value noise on a lattice of `period` cells per side, tileable. The
+// lattice's values are drawn once per map (a texel reads four; drawing
+// them per read spent most of a scene's load hashing).
+struct NoiseLattice {
+    NoiseLattice(uint32_t seed, int period) : period(period), value(size_t(period) * size_t(period)) {
+        for (int j = 0; j < period; ++j)
+            for (int i = 0; i < period; ++i) value[size_t(j) * size_t(period) + size_t(i)] = random01(seed, i, j, 7);
+    }
+    int period;
+    std::vector<double> value;
+};
+
+double tiled_noise(const NoiseLattice& lattice, double x, double y) {
+    const int period = lattice.period;
     const double fx0 = std::floor(x), fy0 = std::floor(y);
     const int ix = int(fx0), iy = int(fy0);
     const double sx = smoothstep01(x - fx0), sy = smoothstep01(y - fy0);
-    auto at = [&](int i, int j) { return random01(seed, wrap(i, period), wrap(j, period), 7); };
+    auto at = [&](int i, int j) { return lattice.value[size_t(wrap(j, period)) * size_t(period) + size_t(wrap(i, period))]; };
     const double a = at(ix, iy), b = at(ix + 1, iy), c = at(ix, iy + 1), d = at(ix + 1, iy + 1);
     return (a + (b - a) * sx) * (1.0 - sy) + (c + (d - c) * sx) * sy;
 }
@@ -46,7 +58,21 @@ struct StoneHit {
     double centre = 0.0;        // distance to the stone's feature point
 };
 
-StoneHit nearest_stone(const StoneParams& p, double qx, double qy) {
+// Each cell's jitter, drawn once per map (a texel looks at 25 cells).
+struct StoneLattice {
+    explicit StoneLattice(const StoneParams& p) : cells(p.cells), jitter(size_t(p.cells) * size_t(p.cells) * 2) {
+        for (int j = 0; j < cells; ++j)
+            for (int i = 0; i < cells; ++i) {
+                jitter[2 * (size_t(j) * size_t(cells) + size_t(i))] = random01(p.seed, i, j, 0);
+                jitter[2 * (size_t(j) * size_t(cells) + size_t(i)) + 1] = random01(p.seed, i, j, 1);
+            }
+    }
+    double at(int i, int j, int axis) const { return jitter[2 * (size_t(j) * size_t(cells) + size_t(i)) + size_t(axis)]; }
+    int cells;
+    std::vector<double> jitter;
+};
+
+StoneHit nearest_stone(const StoneParams& p, const StoneLattice& lattice, double qx, double qy) {
     const int bx = int(std::floor(qx)), by = int(std::floor(qy));
     double fx[25], fy[25];
     int ci[25], cj[25];
@@ -58,8 +84,8 @@ StoneHit nearest_stone(const StoneParams& p, double qx, double qy) {
             ci[n] = wrap(i, p.cells);
             cj[n] = wrap(j, p.cells);
             // Jitter kept away from the cell's edges so that no stone is a sliver.
-            fx[n] = i + 0.2 + 0.6 * random01(p.seed, ci[n], cj[n], 0);
-            fy[n] = j + 0.2 + 0.6 * random01(p.seed, ci[n], cj[n], 1);
+            fx[n] = i + 0.2 + 0.6 * lattice.at(ci[n], cj[n], 0);
+            fy[n] = j + 0.2 + 0.6 * lattice.at(ci[n], cj[n], 1);
             const double d2 = (fx[n] - qx) * (fx[n] - qx) + (fy[n] - qy) * (fy[n] - qy);
             if (d2 < best_d2) best_d2 = d2, best = n;
         }
@@ -99,16 +125,18 @@ HeightField stone_heights(const StoneParams& p) {
     HeightField f;
     f.size = p.size;
     f.h.resize(size_t(p.size) * size_t(p.size));
+    const StoneLattice stones(p);
+    const NoiseLattice noise(p.seed, p.cells * 6);
     for (int y = 0; y < p.size; ++y)
         for (int x = 0; x < p.size; ++x) {
             const double qx = (x + 0.5) * p.cells / p.size, qy = (y + 0.5) * p.cells / p.size;
-            const StoneHit s = nearest_stone(p, qx, qy);
+            const StoneHit s = nearest_stone(p, stones, qx, qy);
             // A stone: a flattish top at its own height, domed a little,
             // rounded over `bevel` down to the joint.
             const double top = 0.70 + 0.25 * random01(p.seed, s.cx, s.cy, 2);
             const double dome = 0.3 * s.centre * s.centre;
             const double edge = smoothstep01((s.border - p.mortar) / p.bevel);
-            const double grain = 0.03 * (tiled_noise(p.seed, qx * 6.0, qy * 6.0, p.cells * 6) - 0.5);
+            const double grain = 0.03 * (tiled_noise(noise, qx * 6.0, qy * 6.0) - 0.5);
             f.h[size_t(y) * size_t(p.size) + size_t(x)] =
                 std::clamp(kJointHeight + (top - dome - kJointHeight) * edge + grain, 0.0, 1.0);
         }
@@ -160,12 +188,14 @@ Texture relief_texture(const HeightField& field, double depth, const std::string
 
 Texture stone_colour_texture(const StoneParams& p, const std::string& sampler) {
     Texture t = rgba8_trilinear(sampler, p.size);
+    const StoneLattice stones(p);
+    const NoiseLattice noise(p.seed + 1, p.cells * 12);
     for (int y = 0; y < p.size; ++y)
         for (int x = 0; x < p.size; ++x) {
             const double qx = (x + 0.5) * p.cells / p.size, qy = (y + 0.5) * p.cells / p.size;
-            const StoneHit s = nearest_stone(p, qx, qy);
+            const StoneHit s = nearest_stone(p, stones, qx, qy);
             const double tone = random01(p.seed, s.cx, s.cy, 3), bright = 0.8 + 0.3 * random01(p.seed, s.cx, s.cy, 4);
-            const double grain = 0.88 + 0.24 * tiled_noise(p.seed + 1, qx * 12.0, qy * 12.0, p.cells * 12);
+            const double grain = 0.88 + 0.24 * tiled_noise(noise, qx * 12.0, qy * 12.0);
             // Stones between a warm grey-brown and a cool grey; joints a pale mortar.
             double rgb[3] = {(0.47 + 0.15 * tone) * bright, (0.42 + 0.18 * tone) * bright,
                              (0.36 + 0.20 * tone) * bright};
