@@ -182,6 +182,34 @@ int cmd_explore(const ExploreOptions& options, const CommonOptions& common) {
     const auto start = std::chrono::steady_clock::now();
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
     long run = 0;
+    double last_written = 0;
+    // The summary, also written every minute while the run goes on, so a
+    // long run stopped early still says what it found ("finished": false).
+    long bad = 0;
+    const auto summary_json = [&](bool finished) {
+        nlohmann::json summary = {{"seed", options.seed}, {"cases", run}, {"seconds", elapsed()},
+                                  {"max_fields", options.max_fields}, {"finished", finished}};
+        if (!common.overrides.empty()) summary["set"] = common.overrides;
+        nlohmann::json per_kind = nlohmann::json::object();
+        bad = 0;
+        for (const auto& [kind, c] : counts) {
+            nlohmann::json refusals = nlohmann::json::object();
+            for (const auto& [m, n] : c.refusals) refusals[m] = n;
+            per_kind[kind] = {{"cases", c.cases}, {"pass", c.pass},       {"fail", c.fail},
+                              {"refused", c.refused}, {"errors", c.errors}, {"refusals", refusals}};
+            bad += c.fail + c.errors;
+        }
+        summary["kinds"] = per_kind;
+        summary["failures"] = failures;
+        const fs::path path = fs::path(options.out_dir) / "summary.json", tmp = path.string() + ".tmp";
+        {
+            std::ofstream out(tmp);
+            out << json_text(summary) << "\n";
+            if (!out) throw std::runtime_error("cannot write " + path.string());
+        }
+        fs::rename(tmp, path);
+        return summary;
+    };
     for (long i = 0; i < options.cases; ++i) {
         if (options.seconds > 0 && elapsed() >= options.seconds) break;
         const std::string& kind = kinds[size_t(i) % kinds.size()];
@@ -208,6 +236,7 @@ int cmd_explore(const ExploreOptions& options, const CommonOptions& common) {
         case Outcome::Fail: ++c.fail; break;
         case Outcome::Error: ++c.errors; break;
         }
+        if (elapsed() - last_written >= 60) summary_json(false), last_written = elapsed();
         if (!Explorer::failing(r)) {
             fs::remove_all(dir);
             continue;
@@ -255,23 +284,7 @@ int cmd_explore(const ExploreOptions& options, const CommonOptions& common) {
                             {"images", dir.string()}});
     }
 
-    nlohmann::json summary = {{"seed", options.seed}, {"cases", run}, {"seconds", elapsed()},
-                              {"max_fields", options.max_fields}};
-    nlohmann::json per_kind = nlohmann::json::object();
-    long bad = 0;
-    for (const auto& [kind, c] : counts) {
-        nlohmann::json refusals = nlohmann::json::object();
-        for (const auto& [m, n] : c.refusals) refusals[m] = n;
-        per_kind[kind] = {{"cases", c.cases}, {"pass", c.pass},     {"fail", c.fail},
-                          {"refused", c.refused}, {"errors", c.errors}, {"refusals", refusals}};
-        bad += c.fail + c.errors;
-    }
-    summary["kinds"] = per_kind;
-    summary["failures"] = failures;
-    {
-        std::ofstream out(fs::path(options.out_dir) / "summary.json");
-        out << json_text(summary) << "\n";
-    }
+    const nlohmann::json summary = summary_json(true);
     if (options.json) {
         std::cout << json_text(summary) << std::endl;
     } else {
