@@ -195,6 +195,7 @@ namespace {
 std::map<std::string, const ParamSpace*>& spaces() {
     static std::map<std::string, const ParamSpace*> spaces = {
         {"relief", &relief_space()},
+        {"thin-slab", &thin_slab_space()},
     };
     return spaces;
 }
