@@ -25,8 +25,13 @@ struct FieldSpec {
     std::string path;
     FieldType type = FieldType::Number;
     double lo = 0, hi = 0;            // Number, Integer and each of Numbers
-    size_t min_len = 0, max_len = 0;  // Numbers; arrays of objects
-    std::vector<std::string> choices;  // Choice
+    size_t min_len = 0, max_len = 0;  // Numbers; arrays of objects; a Choice's list (below)
+    // Numbers given as `rows` arrays of min_len..max_len numbers each (a
+    // triangle's corners: "triangles[].positions"); 0: one flat array.
+    size_t rows = 0;
+    // Choice; with max_len > 0 an array of min_len..max_len of them (a
+    // blend's factors).
+    std::vector<std::string> choices;
     nlohmann::json fallback;          // the default; null: required, or absent means "none"
     bool required = false;
     std::string meaning;
@@ -68,6 +73,8 @@ struct FieldSpec {
     FieldSpec& not_explored() { explore = false; return *this; }
     FieldSpec& opaque_object() { opaque = true, explore = false; return *this; }
     FieldSpec& explore_at_most(double hi_) { explore_hi = hi_; return *this; }
+    FieldSpec& in_rows(size_t n) { rows = n; return *this; }
+    FieldSpec& listed(size_t lo_, size_t hi_) { min_len = lo_, max_len = hi_; return *this; }
 
     // The domain as docs and error messages say it: "1..512", "[0, 89]",
     // "one of a, b", "3 numbers in [-1e6, 1e6]".
