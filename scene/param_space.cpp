@@ -204,6 +204,7 @@ std::map<std::string, const ParamSpace*>& spaces() {
         {"conformance", &conformance_space()},
         {"relief", &relief_space()},
         {"thin-slab", &thin_slab_space()},
+        {"triangles", &triangles_space()},
     };
     return spaces;
 }
