@@ -202,6 +202,7 @@ namespace {
 std::map<std::string, const ParamSpace*>& spaces() {
     static std::map<std::string, const ParamSpace*> spaces = {
         {"conformance", &conformance_space()},
+        {"profile", &profile_space()},
         {"relief", &relief_space()},
         {"thin-slab", &thin_slab_space()},
         {"triangles", &triangles_space()},
