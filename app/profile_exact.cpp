@@ -12,6 +12,7 @@
 #include "reference/profile_convolution.h"
 #include "scene/input_error.h"
 #include "scene/profile_scene.h"
+#include "scene/scene_spaces.h"
 
 namespace st {
 
@@ -46,6 +47,7 @@ private:
 ProfileExact exact_profile_image(const Scene& scene) {
     if (scene.kind != "profile") throw InputError("scene '" + scene.name + "' is not a profile scene");
     JsonReader r(scene.document, "");
+    r.bind(profile_space());
     const ProfileSceneSpec spec = read_profile_scene(r);
     if (spec.shape.kind != "slab") throw InputError("the exact image needs the flat slab (geometry.shape \"slab\")");
     const int width = scene.frame.passes.back().width, height = scene.frame.passes.back().height;

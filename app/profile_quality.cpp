@@ -17,6 +17,7 @@
 #include "scene/profile_cache.h"
 #include "scene/profile_material.h"
 #include "scene/scene.h"
+#include "scene/scene_spaces.h"
 
 namespace st {
 
@@ -78,6 +79,7 @@ std::string last_build_line(size_t before) {
 
 double reference_reach_mm(const nlohmann::json& material) {
     JsonReader r(material, "material");
+    r.bind(profile_space());
     const ProfileMaterial m = read_profile_material(r);
     double longest = 0;
     for (const optics::LayerSpec& l : m.layers)

@@ -310,6 +310,10 @@ void GlRenderer::prepare(const Frame& frame) {
         }
         state_->named[rt.name] = std::move(n);
     }
+    // The frame's passes (no target) share one texture per size, as the CPU
+    // side keeps one frame image: a pass that does not clear draws over the
+    // earlier passes' image, and the first starts from zero.
+    std::map<std::pair<int, int>, size_t> frame_owner;  // size -> index of the pass owning its texture
     for (const Pass& pass : frame.passes) {
         State::Target t;
         t.width = pass.width;
@@ -326,11 +330,23 @@ void GlRenderer::prepare(const Frame& frame) {
             t.owned = false;
             t.fbo = n.fbos[size_t(pass.level)];
             t.colour = n.texture;
+        } else if (const auto owner = frame_owner.find({t.width, t.height}); owner != frame_owner.end()) {
+            const State::Target& first = state_->passes[owner->second];
+            t.owned = false;
+            t.fbo = first.fbo;
+            t.colour = first.colour;
         } else {
             gl.GenTextures(1, &t.colour);
             gl.BindTexture(GL_TEXTURE_2D, t.colour);
             gl.TexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, t.width, t.height);
             make_framebuffer(gl, t.colour, 0, t.width, t.height, t.fbo, t.depth);
+            // Start from zero, as the CPU side does: a first pass that does
+            // not clear (clear: false) would otherwise keep whatever memory
+            // llvmpipe handed out, often the last frame's (found by explore:
+            // conformance-branch-texture with clear=false).
+            gl.ClearColor(0, 0, 0, 0);
+            gl.Clear(GL_COLOR_BUFFER_BIT);
+            frame_owner[{t.width, t.height}] = state_->passes.size();
         }
 
         for (const DrawCall& dc : pass.draws) {

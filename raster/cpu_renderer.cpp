@@ -152,6 +152,7 @@ void CpuRenderer::execute() {
         for (int level = 0; level < t.levels; ++level)
             m.targets[t.name].emplace_back(
                 size_t(std::max(1, t.width >> level)) * size_t(std::max(1, t.height >> level)) * 4, 0.0f);
+    bool frame_started = false;  // a frame pass has drawn into m.result this frame
     for (size_t pi = 0; pi < m.frame.passes.size(); ++pi) {
         const Pass& pass = m.frame.passes[pi];
         auto& draws = m.passes[pi];
@@ -162,9 +163,15 @@ void CpuRenderer::execute() {
         m.refresh_target_textures(draws);
         // The allocations are reused from frame to frame; tiles clear them.
         std::unique_ptr<Framebuffer>& fb = pass.target.empty() ? m.result : m.target_fb;
-        if (!fb || fb->width != pass.width || fb->height != pass.height)
-            fb = std::make_unique<Framebuffer>(pass.width, pass.height);
+        const bool resized = !fb || fb->width != pass.width || fb->height != pass.height;
+        if (resized) fb = std::make_unique<Framebuffer>(pass.width, pass.height);
         if (!pass.target.empty() && !pass.clear) fb->load_texels(m.targets.at(pass.target)[size_t(pass.level)]);
+        // The frame image starts each frame at zero, as on the GL side: a
+        // first frame pass that does not clear must not draw over the last
+        // frame's image, which the reused allocation still holds.
+        if (pass.target.empty() && !pass.clear && (resized || !frame_started))
+            fb->load_texels(std::vector<float>(size_t(pass.width) * size_t(pass.height) * 4, 0.0f));
+        if (pass.target.empty()) frame_started = true;
         for (PreparedDraw& d : draws) m.run_vertex_stage(d, viewport);
         const auto t1 = Clock::now();
         m.binner.run(draws, pass.width, pass.height, viewport, m.pool);

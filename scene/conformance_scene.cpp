@@ -10,6 +10,7 @@
 #include <set>
 
 #include "scene/input_error.h"
+#include "scene/param_space.h"
 #include "scene/scene_kinds.h"
 #include "scene/texture_patterns.h"
 #include "scene/triangle_list.h"
@@ -19,15 +20,18 @@ namespace st {
 
 namespace {
 
-constexpr size_t kMaxUniforms = 64;
-constexpr size_t kMaxTextures = 8;
-constexpr size_t kMaxTargets = 16;
-constexpr size_t kMaxPasses = 64;
+// Every field's domain and default: scene/conformance_space.cpp.
+
+// The objects of an array field, as many as its declaration allows.
+std::vector<JsonReader> declared_objects(JsonReader& r, const std::string& key) {
+    const FieldSpec& f = r.spec(key);
+    return r.objects(key, f.min_len, f.max_len);
+}
 
 // {"name": "steps", "int": 40} | {"name": "dir", "vec2": [0.1, 0.2]} | ...
 Uniform read_uniform(JsonReader& r) {
     Uniform u;
-    u.name = r.string("name");
+    u.name = r.text("name");
     int found = 0;
     const struct { const char* key; UniformType type; size_t n; } kinds[] = {
         {"float", UniformType::Float, 1}, {"vec2", UniformType::Vec2, 2}, {"vec3", UniformType::Vec3, 3},
@@ -37,11 +41,11 @@ Uniform read_uniform(JsonReader& r) {
         ++found;
         u.type = k.type;
         if (k.type == UniformType::Int) {
-            u.value[0] = float(r.integer(k.key, -(1 << 24), 1 << 24));  // exact as a float
+            u.value[0] = float(r.integer(k.key));  // exact as a float
         } else if (k.n == 1) {
-            u.value[0] = float(r.number(k.key, -kHuge, kHuge));
+            u.value[0] = float(r.number(k.key));
         } else {
-            const auto v = r.numbers(k.key, k.n, k.n, -kHuge, kHuge);
+            const auto v = r.numbers(k.key);
             for (size_t i = 0; i < k.n; ++i) u.value[i] = float(v[i]);
         }
     }
@@ -71,7 +75,8 @@ BlendFactor factor_named(const std::string& name, const std::string& field) {
 // "blend": [src, dst] or [src_rgb, dst_rgb, src_alpha, dst_alpha], GL_FUNC_ADD.
 void read_blend(JsonReader& r, DrawState& state) {
     if (!r.has("blend")) return;
-    const auto& a = r.array("blend", 2, 4);
+    const FieldSpec& spec = r.spec("blend");
+    const auto& a = r.array("blend", spec.min_len, spec.max_len);
     if (a.size() == 3) throw InputError("field '" + r.field("blend") + "' needs 2 or 4 factor names");
     std::vector<BlendFactor> f;
     for (size_t i = 0; i < a.size(); ++i) {
@@ -88,19 +93,19 @@ Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSiz
     Pass pass;
     SceneSize size = image;
     if (r.has("target")) {
-        pass.target = r.string("target");
+        pass.target = r.text("target");
         const RenderTarget* rt = nullptr;
         for (const RenderTarget& t : targets)
             if (t.name == pass.target) rt = &t;
         if (!rt) throw InputError("field '" + r.field("target") + "': no target named '" + pass.target + "'");
-        pass.level = r.integer_or("level", 0, 0, rt->levels - 1);
+        pass.level = r.integer_in("level", 0, rt->levels - 1);
         pass.format = rt->format;
         size = {std::max(1, rt->width >> pass.level), std::max(1, rt->height >> pass.level)};
     }
     pass.width = size.width;
     pass.height = size.height;
     if (r.has("viewport")) {
-        const auto v = r.numbers("viewport", 4, 4, 0, 8192);
+        const auto v = r.numbers("viewport");
         for (double x : v)
             if (x != std::floor(x)) throw InputError("field '" + r.field("viewport") + "' needs whole pixels");
         if (v[2] < 1 || v[3] < 1 || v[0] + v[2] > size.width || v[1] + v[3] > size.height)
@@ -109,22 +114,20 @@ Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSiz
         pass.viewport_x = int(v[0]), pass.viewport_y = int(v[1]);
         pass.viewport_width = int(v[2]), pass.viewport_height = int(v[3]);
     }
-    pass.clear = r.boolean_or("clear", true);
-    if (r.has("clear_colour")) {
-        const auto c = r.numbers("clear_colour", 4, 4, -kHuge, kHuge);
-        pass.clear_colour = glm::vec4(float(c[0]), float(c[1]), float(c[2]), float(c[3]));
-    }
+    pass.clear = r.boolean("clear");
+    const auto c = r.numbers("clear_colour");
+    pass.clear_colour = glm::vec4(float(c[0]), float(c[1]), float(c[2]), float(c[3]));
     DrawCall draw;
     draw.vertex = "textured";
-    draw.fragment = r.string("fragment");
+    draw.fragment = r.text("fragment");
     if (r.has("uniforms"))
-        for (JsonReader& u : r.objects("uniforms", 0, kMaxUniforms)) draw.uniforms.push_back(read_uniform(u));
+        for (JsonReader& u : declared_objects(r, "uniforms")) draw.uniforms.push_back(read_uniform(u));
     if (r.has("textures"))
-        for (JsonReader& t : r.objects("textures", 0, kMaxTextures)) {
-            const std::string sampler = t.string("sampler");
+        for (JsonReader& t : declared_objects(r, "textures")) {
+            const std::string sampler = t.text("sampler");
             draw.textures.push_back(read_pattern_texture(t, sampler));
         }
-    draw.state.depth_test = r.boolean_or("depth_test", false);
+    draw.state.depth_test = r.boolean("depth_test");
     if (draw.state.depth_test && !pass.clear)
         throw InputError("field '" + r.field("clear") + "': a pass that keeps its colour cannot test depth");
     read_blend(r, draw.state);
@@ -136,13 +139,12 @@ Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSiz
 
 RenderTarget read_target(JsonReader& r) {
     RenderTarget t;
-    t.name = r.string("name");
+    t.name = r.text("name");
     if (t.name.empty()) throw InputError("field '" + r.field("name") + "' must not be empty");
-    t.width = r.integer("width", 1, 4096);
-    t.height = r.integer("height", 1, 4096);
-    t.format = r.choice_or("format", "rgba32f", {"rgba16f", "rgba32f"}) == "rgba16f" ? TargetFormat::RGBA16F
-                                                                                    : TargetFormat::RGBA32F;
-    t.levels = r.integer_or("levels", 1, 1, full_chain_levels(t.width, t.height));
+    t.width = r.integer("width");
+    t.height = r.integer("height");
+    t.format = r.choice("format") == "rgba16f" ? TargetFormat::RGBA16F : TargetFormat::RGBA32F;
+    t.levels = r.integer_in("levels", 1, full_chain_levels(t.width, t.height));
     r.finish();
     return t;
 }
@@ -180,7 +182,7 @@ Frame build_conformance_scene(JsonReader& scene, SceneSize size) {
     Frame frame;
     std::vector<std::string> where;
     if (scene.has("targets")) {
-        for (JsonReader& t : scene.objects("targets", 1, kMaxTargets)) {
+        for (JsonReader& t : declared_objects(scene, "targets")) {
             frame.targets.push_back(read_target(t));
             for (size_t i = 0; i + 1 < frame.targets.size(); ++i)
                 if (frame.targets[i].name == frame.targets.back().name)
@@ -189,7 +191,7 @@ Frame build_conformance_scene(JsonReader& scene, SceneSize size) {
         }
     }
     if (scene.has("passes"))
-        for (JsonReader& p : scene.objects("passes", 1, kMaxPasses)) {
+        for (JsonReader& p : declared_objects(scene, "passes")) {
             where.push_back(p.path() + ".");
             frame.passes.push_back(read_pass(p, frame.targets, size));
             p.finish();

@@ -271,6 +271,7 @@ bool JsonReader::boolean(const std::string& key) {
 std::string JsonReader::choice(const std::string& key) {
     const FieldSpec& f = spec(key);
     expect_type(f, FieldType::Choice, field(key));
+    if (f.max_len) throw std::logic_error("field '" + field(key) + "' is a list of choices: read it entry by entry");
     if (!has(key)) return declared_default(f, field(key)).get<std::string>();
     return choice_or(key, f.choices.front(), f.choices);
 }
@@ -278,6 +279,7 @@ std::string JsonReader::choice(const std::string& key) {
 std::vector<double> JsonReader::numbers(const std::string& key) {
     const FieldSpec& f = spec(key);
     expect_type(f, FieldType::Numbers, field(key));
+    if (f.rows) throw std::logic_error("field '" + field(key) + "' is an array of arrays: read it row by row");
     if (!has(key)) return declared_default(f, field(key)).get<std::vector<double>>();
     return numbers(key, f.min_len, f.max_len, f.lo, f.hi);
 }

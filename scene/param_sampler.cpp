@@ -162,21 +162,54 @@ nlohmann::json ParamSampler::draw_value(const FieldSpec& f, const std::string& p
     case FieldType::Boolean: return rng.chance(0.5);
     case FieldType::Choice: {
         const std::vector<std::string>& c = f.drawn_choices.empty() ? f.choices : f.drawn_choices;
-        return c[rng.below(c.size())];
+        if (!f.max_len) return c[rng.below(c.size())];
+        // A list of choices (a blend's factors): as long as the document's.
+        const nlohmann::json* v = json_at(doc, path);
+        const size_t len = v && v->is_array() && v->size() >= f.min_len && v->size() <= f.max_len ? v->size() : f.min_len;
+        nlohmann::json out = nlohmann::json::array();
+        for (size_t i = 0; i < len; ++i) out.push_back(c[rng.below(c.size())]);
+        return out;
     }
     case FieldType::Numbers: {
-        size_t len = f.min_len;
-        if (const nlohmann::json* v = json_at(doc, path); v && v->is_array() && v->size() >= f.min_len &&
-                                                          v->size() <= f.max_len)
-            len = v->size();
+        // A row's length as the document has it (a corner given as x, y
+        // stays x, y), else the least.
+        const nlohmann::json* v = json_at(doc, path);
+        const auto length = [&](const nlohmann::json* row) {
+            return row && row->is_array() && row->size() >= f.min_len && row->size() <= f.max_len ? row->size() : f.min_len;
+        };
+        const auto flat = [&](size_t len) {
+            nlohmann::json out = nlohmann::json::array();
+            for (size_t i = 0; i < len; ++i) {
+                const double x = number(edge && rng.chance(0.5));
+                if (f.integers)
+                    out.push_back((long long)std::clamp(std::round(x), std::ceil(lo), std::floor(hi)));
+                else
+                    out.push_back(x);
+            }
+            return out;
+        };
+        if (!f.rows) return flat(length(v));
         nlohmann::json out = nlohmann::json::array();
-        for (size_t i = 0; i < len; ++i) out.push_back(number(edge && rng.chance(0.5)));
+        for (size_t r = 0; r < f.rows; ++r)
+            out.push_back(flat(length(v && v->is_array() && r < v->size() ? &(*v)[r] : nullptr)));
         return out;
     }
     case FieldType::Text:
     case FieldType::Object: break;
     }
     return nullptr;
+}
+
+// A field (or an object around it) declared only_if_present is changed
+// only where the document has it: the sampler never adds it.
+bool ParamSampler::present_enough(const std::string& path, const nlohmann::json& doc) const {
+    std::string prefix;
+    for (const std::string& seg : split(path)) {
+        prefix += (prefix.empty() ? "" : ".") + seg;
+        const FieldSpec* f = is_index(seg) ? nullptr : space_.find(ParamSpace::normalise(prefix));
+        if (f && f->if_present && !json_at(doc, prefix)) return false;
+    }
+    return true;
 }
 
 std::vector<Assignment> ParamSampler::draw(const nlohmann::json& base, SampleRng& rng, int max_fields,
@@ -192,7 +225,7 @@ std::vector<Assignment> ParamSampler::draw(const nlohmann::json& base, SampleRng
         const FieldSpec& f = *candidates[rng.below(candidates.size())];
         if (!applies(f, doc)) continue;
         const std::string path = concrete(f.path, doc, &rng);
-        if (path.empty()) continue;
+        if (path.empty() || !present_enough(path, doc)) continue;
         if (std::any_of(out.begin(), out.end(), [&](const Assignment& a) { return a.path == path; })) continue;
         nlohmann::json value = draw_value(f, path, doc, rng, rng.chance(edge_share));
         json_set(doc, path, value);
@@ -233,7 +266,9 @@ nlohmann::json ParamSampler::apply(const nlohmann::json& base, const std::vector
         const size_t dot = f.path.rfind('.');
         const bool parent_present = dot == std::string::npos || json_at(doc, f.path.substr(0, dot));
         const nlohmann::json* v = json_at(doc, f.path);
-        if (f.required && !v && parent_present) {
+        // A field the explorer may only change where it is (one of several
+        // forms: a slab's optics beside a stack) is never added either.
+        if (f.required && !v && parent_present && !f.if_present) {
             if (f.type == FieldType::Object)
                 json_set(doc, f.path, nlohmann::json::object());
             else if (f.type != FieldType::Text)

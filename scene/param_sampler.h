@@ -62,6 +62,7 @@ public:
                               SampleRng& rng, bool edge) const;
 
 private:
+    bool present_enough(const std::string& path, const nlohmann::json& doc) const;
     // The value at a concrete path, else the declared default, else null.
     nlohmann::json value_or_default(const nlohmann::json& doc, const std::string& path) const;
     const ParamSpace& space_;

@@ -47,10 +47,15 @@ std::string FieldSpec::type_text() const {
     case FieldType::Number: return "number";
     case FieldType::Integer: return "integer";
     case FieldType::Boolean: return "boolean";
-    case FieldType::Choice: return "string";
-    case FieldType::Numbers:
-        return min_len == max_len ? std::to_string(min_len) + " numbers"
-                                  : std::to_string(min_len) + " to " + std::to_string(max_len) + " numbers";
+    case FieldType::Choice:
+        if (!max_len) return "string";
+        return min_len == max_len ? std::to_string(min_len) + " strings"
+                                  : std::to_string(min_len) + " to " + std::to_string(max_len) + " strings";
+    case FieldType::Numbers: {
+        const std::string each = min_len == max_len ? std::to_string(min_len) + " numbers"
+                                                    : std::to_string(min_len) + " to " + std::to_string(max_len) + " numbers";
+        return rows ? std::to_string(rows) + " arrays of " + each : each;
+    }
     case FieldType::Text: return "string";
     case FieldType::Object: return max_len ? "array of objects" : "object";
     }
@@ -62,12 +67,14 @@ std::string FieldSpec::domain_text() const {
     const std::string hi_s = hi_field.empty() ? short_number(hi) : "`" + hi_field + "`";
     switch (type) {
     case FieldType::Number: return "[" + lo_s + ", " + hi_s + "]";
-    case FieldType::Integer: return lo_s + ".." + hi_s;
+    case FieldType::Integer:  // every digit (a seed's 1073741824, not 1.07374e+09)
+        return (lo_field.empty() ? std::to_string((long long)lo) : lo_s) + ".." +
+               (hi_field.empty() ? std::to_string((long long)hi) : hi_s);
     case FieldType::Numbers: return "each in [" + lo_s + ", " + hi_s + "]";
     case FieldType::Choice: {
         std::string out;
         for (const auto& c : choices) out += (out.empty() ? "" : ", ") + ("`" + c + "`");
-        return out;
+        return max_len ? "each one of " + out : out;
     }
     case FieldType::Object:
         return max_len ? std::to_string(min_len) + ".." + std::to_string(max_len) + " entries" : "";
@@ -202,7 +209,11 @@ namespace {
 
 std::map<std::string, const ParamSpace*>& spaces() {
     static std::map<std::string, const ParamSpace*> spaces = {
+        {"conformance", &conformance_space()},
+        {"profile", &profile_space()},
         {"relief", &relief_space()},
+        {"thin-slab", &thin_slab_space()},
+        {"triangles", &triangles_space()},
     };
     return spaces;
 }

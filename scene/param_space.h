@@ -25,8 +25,13 @@ struct FieldSpec {
     std::string path;
     FieldType type = FieldType::Number;
     double lo = 0, hi = 0;            // Number, Integer and each of Numbers
-    size_t min_len = 0, max_len = 0;  // Numbers; arrays of objects
-    std::vector<std::string> choices;  // Choice
+    size_t min_len = 0, max_len = 0;  // Numbers; arrays of objects; a Choice's list (below)
+    // Numbers given as `rows` arrays of min_len..max_len numbers each (a
+    // triangle's corners: "triangles[].positions"); 0: one flat array.
+    size_t rows = 0;
+    // Choice; with max_len > 0 an array of min_len..max_len of them (a
+    // blend's factors).
+    std::vector<std::string> choices;
     nlohmann::json fallback;          // the default; null: required, or absent means "none"
     bool required = false;
     std::string meaning;
@@ -72,6 +77,17 @@ struct FieldSpec {
     // file, which it cannot make up, left out).
     FieldSpec& explore_choices(std::vector<std::string> c) { drawn_choices = std::move(c); return *this; }
     std::vector<std::string> drawn_choices;
+    FieldSpec& in_rows(size_t n) { rows = n; return *this; }
+    // The explorer changes this field (or what an object holds) only where
+    // the document has it, never adds it: one of several exclusive forms
+    // (a uniform's float or vec3), or an object whose presence asks for
+    // more elsewhere (a texture needs every triangle's uvs).
+    FieldSpec& only_if_present() { if_present = true; return *this; }
+    // Numbers that must be whole (a viewport in pixels): drawn as integers.
+    FieldSpec& whole() { integers = true; return *this; }
+    bool integers = false;
+    bool if_present = false;
+    FieldSpec& listed(size_t lo_, size_t hi_) { min_len = lo_, max_len = hi_; return *this; }
 
     // The domain as docs and error messages say it: "1..512", "[0, 89]",
     // "one of a, b", "3 numbers in [-1e6, 1e6]".

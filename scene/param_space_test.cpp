@@ -1,22 +1,101 @@
-// param_space_test.cpp: the declared spaces cover every built-in scene's
-// fields, and the sampler draws inside them, deterministically.
+// param_space_test.cpp: every built-in kind's declared space is whole: the
+// fields its declarations refer to exist, defaults and sampler hints lie in
+// the domains, and each field's object is declared too; every field of
+// every built-in scene is declared; a reader refuses what its space does.
 #include "scene/param_space.h"
-
-#include <fstream>
-#include <set>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <fstream>
+#include <stdexcept>
+
 #include "scene/input_error.h"
 #include "scene/json_reader.h"
-#include "scene/param_sampler.h"
-#include "scene/scene.h"
 #include "scene/scene_sources.h"
+#include "scene/scene_spaces.h"
 
 namespace st {
 namespace {
 
-nlohmann::json read(const std::string& path) {
+bool numeric(const FieldSpec& f) {
+    return f.type == FieldType::Number || f.type == FieldType::Integer || f.type == FieldType::Numbers;
+}
+
+TEST(ParamSpace, EveryBuiltInKindHasOne) {
+    const std::vector<std::string> kinds = spaced_kinds();
+    for (const char* kind : {"conformance", "profile", "relief", "thin-slab", "triangles"}) {
+        EXPECT_NE(std::find(kinds.begin(), kinds.end(), kind), kinds.end()) << kind;
+    }
+}
+
+TEST(ParamSpace, DeclarationsAreWhole) {
+    for (const std::string& kind : spaced_kinds()) {
+        const ParamSpace& s = *kind_space(kind);
+        for (const FieldSpec& f : s.fields()) {
+            SCOPED_TRACE(kind + ": " + f.path);
+            for (const std::string* ref : {&f.lo_field, &f.hi_field, &f.when_field}) {
+                if (!ref->empty()) {
+                    EXPECT_NE(s.find(*ref), nullptr) << *ref;
+                }
+            }
+            if (const FieldSpec* w = f.when_field.empty() ? nullptr : s.find(f.when_field)) {
+                for (const std::string& v : f.when_values) {
+                    EXPECT_NE(std::find(w->choices.begin(), w->choices.end(), v), w->choices.end()) << v;
+                }
+            }
+            // Its object ("a.b[].c" lies in "a.b").
+            if (const size_t dot = f.path.rfind('.'); dot != std::string::npos) {
+                std::string parent = f.path.substr(0, dot);
+                if (parent.ends_with("[]")) parent.resize(parent.size() - 2);
+                const FieldSpec* p = s.find(parent);
+                ASSERT_NE(p, nullptr) << parent;
+                EXPECT_EQ(p->type, FieldType::Object);
+            }
+            if (numeric(f)) {
+                EXPECT_LE(f.lo, f.hi);
+                EXPECT_LE(f.draw_lo, f.draw_hi);
+                EXPECT_GE(f.draw_lo, f.lo);
+                EXPECT_LE(f.draw_hi, f.hi);
+                EXPECT_TRUE(!f.log_scale || f.draw_lo > 0);
+                for (double e : f.edges) {
+                    EXPECT_TRUE(e >= f.lo && e <= f.hi) << e;
+                }
+                EXPECT_TRUE(f.explore_hi == 0 || (f.explore_hi >= f.lo && f.explore_hi <= f.hi));
+                if (f.fallback.is_number()) {
+                    EXPECT_TRUE(f.fallback.get<double>() >= f.lo && f.fallback.get<double>() <= f.hi);
+                }
+                if (f.fallback.is_array()) {
+                    EXPECT_TRUE(f.fallback.size() >= f.min_len && f.fallback.size() <= f.max_len);
+                    for (const auto& v : f.fallback) {
+                        EXPECT_TRUE(v.get<double>() >= f.lo && v.get<double>() <= f.hi);
+                    }
+                }
+            }
+            if (f.type == FieldType::Choice && f.fallback.is_string()) {
+                EXPECT_NE(std::find(f.choices.begin(), f.choices.end(), f.fallback.get<std::string>()), f.choices.end());
+            }
+            if (f.type == FieldType::Object && f.max_len) {
+                EXPECT_LE(f.min_len, f.max_len);
+                EXPECT_TRUE(f.explore_hi == 0 || f.explore_hi <= double(f.max_len));
+            }
+        }
+        EXPECT_FALSE(s.markdown().empty());
+    }
+}
+
+// The triangle list's rows are a triangle's three corners.
+TEST(ParamSpace, TriangleCorners) {
+    for (const char* kind : {"triangles", "conformance"}) {
+        const ParamSpace& s = *kind_space(kind);
+        for (const char* path : {"triangles[].positions", "triangles[].colours", "triangles[].uvs"}) {
+            EXPECT_EQ(s.at(path).rows, 3u) << kind << " " << path;
+        }
+    }
+    EXPECT_EQ(kind_space("conformance")->at("passes.0.triangles.7.uvs").path, "passes[].triangles[].uvs");
+}
+
+nlohmann::json read_scene_file(const std::string& path) {
     std::ifstream in(path);
     return parse_json(in, path);
 }
@@ -42,7 +121,7 @@ void expect_declared(const ParamSpace& space, const nlohmann::json& node, const 
 TEST(ParamSpace, DeclaresEveryFieldOfEveryBuiltInScene) {
     int checked = 0;
     for (const SceneEntry& e : SceneSources().entries()) {
-        const nlohmann::json doc = read(e.path);
+        const nlohmann::json doc = read_scene_file(e.path);
         const ParamSpace* space = kind_space(doc.value("kind", ""));
         if (!space) continue;
         expect_declared(*space, doc, "", e.name);
@@ -69,57 +148,6 @@ TEST(ParamSpace, DomainsAreWellFormed) {
                 if (!other.empty()) EXPECT_NE(s.find(other), nullptr) << kind << " " << f.path << " names " << other;
         }
     }
-}
-
-TEST(ParamSampler, DrawsInsideTheDomainAndTheSameForTheSameSeed) {
-    const ParamSpace& space = *kind_space("relief");
-    const ParamSampler sampler(space);
-    const nlohmann::json base = read(SceneSources().find("relief-absorption")->path);
-    std::set<double> steps_seen;
-    for (uint64_t seed = 0; seed < 3000; ++seed) {
-        SampleRng a(seed), b(seed);
-        const auto drawn = sampler.draw(base, a, 3);
-        ASSERT_EQ(drawn, sampler.draw(base, b, 3));
-        ASSERT_FALSE(drawn.empty());
-        for (const Assignment& as : drawn) {
-            const FieldSpec& f = space.at(as.path);
-            ASSERT_TRUE(f.explore) << as.path;
-            const auto check = [&](const nlohmann::json& v) {
-                ASSERT_TRUE(v.is_number()) << as.path;
-                const double x = v.get<double>();
-                EXPECT_TRUE(x >= f.lo && x <= f.hi) << as.path << " = " << x;
-                if (f.type == FieldType::Integer) EXPECT_TRUE(v.is_number_integer()) << as.path;
-            };
-            if (f.type == FieldType::Number || f.type == FieldType::Integer) check(as.value);
-            if (f.type == FieldType::Numbers)
-                for (const auto& x : as.value) check(x);
-            if (f.type == FieldType::Choice)
-                EXPECT_NE(std::find(f.choices.begin(), f.choices.end(), as.value.get<std::string>()), f.choices.end());
-            if (as.path == "search.linear_steps") steps_seen.insert(as.value.get<double>());
-        }
-    }
-    // Edge draws reach both bounds of a step count.
-    EXPECT_TRUE(steps_seen.count(1));
-    EXPECT_TRUE(steps_seen.count(128));  // the explorer's cap of 512
-}
-
-TEST(ParamSampler, ApplyKeepsTheDocumentConsistentWithTheSpace) {
-    const ParamSampler sampler(*kind_space("relief"));
-    const nlohmann::json base = read(SceneSources().find("relief-two-layer")->path);
-    SampleRng rng(1);
-    // A row without a medium drops the medium's objects.
-    const nlohmann::json mapping = sampler.apply(base, {{"technique", "relief"}}, rng);
-    EXPECT_FALSE(mapping.contains("liquid"));
-    EXPECT_FALSE(mapping.contains("environment"));
-    EXPECT_NO_THROW(load_scene_document("t", mapping, ""));
-    // Absorption needs half distances: drawn, inside their domain.
-    const nlohmann::json absorption = sampler.apply(base, {{"technique", "absorption"}}, rng);
-    ASSERT_TRUE(absorption["liquid"].contains("half_distance"));
-    EXPECT_NO_THROW(load_scene_document("t", absorption, ""));
-    // A bound that is another field's value is met.
-    const nlohmann::json radii = sampler.apply(base, {{"liquid.min_radius", 0.3}}, rng);
-    EXPECT_GE(radii["liquid"].value("max_radius", 0.11), 0.3);
-    EXPECT_NO_THROW(load_scene_document("t", radii, ""));
 }
 
 TEST(ParamSpace, ReadingAnUndeclaredFieldIsADefect) {

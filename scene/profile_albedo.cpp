@@ -28,12 +28,13 @@ struct SplitMix {
 
 AlbedoMap read_albedo_map(JsonReader& r) {
     AlbedoMap m;
-    m.pattern = r.choice_or("pattern", "freckles", {"freckles"});
-    m.count = r.integer_or("count", m.count, 1, 100000);
-    m.radius_mm = r.number_or("radius_mm", m.radius_mm, 1e-3, 1e4);
-    const std::vector<double> s = r.numbers("strength", 3, 3, 0.0, 0.95);
+    // Domains and defaults: scene/profile_space.cpp.
+    m.pattern = r.choice("pattern");
+    m.count = r.integer("count");
+    m.radius_mm = r.number("radius_mm");
+    const std::vector<double> s = r.numbers("strength");
     m.strength = {s[0], s[1], s[2]};
-    m.seed = uint64_t(r.integer_or("seed", 1, 0, 1 << 30));
+    m.seed = uint64_t(r.integer("seed"));
     r.finish();
     return m;
 }

@@ -20,6 +20,7 @@
 #include "optics/rough_surface.h"
 #include "scene/input_error.h"
 #include "scene/layer_file.h"
+#include "scene/param_space.h"
 #include "scene/profile_cache.h"
 
 namespace st {
@@ -39,8 +40,8 @@ int same_as_earlier(const std::vector<optics::LayerSpec>& layers, int c) {
     return -1;
 }
 
-std::array<double, 3> rgb(JsonReader& r, const std::string& key, double lo, double hi) {
-    const std::vector<double> v = r.numbers(key, 1, 3, lo, hi);
+std::array<double, 3> rgb(JsonReader& r, const std::string& key) {
+    const std::vector<double> v = r.numbers(key);
     if (v.size() == 2) throw InputError("field '" + r.field(key) + "' needs one value or three (R, G, B)");
     return v.size() == 1 ? std::array<double, 3>{v[0], v[0], v[0]} : std::array<double, 3>{v[0], v[1], v[2]};
 }
@@ -262,29 +263,31 @@ double ProfileMaterial::thickness() const {
     return d;
 }
 
+// Every field's domain and default: scene/profile_space.cpp.
 ProfileMaterial read_profile_material(JsonReader& r) {
     ProfileMaterial m;
-    m.model = r.choice_or("model", "multipole", {"dipole", "multipole", "layered", "mc"});
+    m.model = r.choice("model");
     if (r.has("layers")) {
-        const nlohmann::json& list = r.array("layers", 1, 64);
+        // In the layer-file format, which parse_layers checks.
+        const FieldSpec& layers = r.spec("layers");
+        const nlohmann::json& list = r.array("layers", layers.min_len, layers.max_len);
         m.layers = parse_layers(list, "field '" + r.field("layers") + "'");
     } else if (r.has("layers_file")) {
-        m.layers = read_layer_file(r.string("layers_file"));
+        m.layers = read_layer_file(r.text("layers_file"));
     } else {
         // One slab, its fields inline; thickness_mm absent: semi-infinite.
         optics::LayerSpec l;
-        l.sigma_a = rgb(r, "sigma_a", 1e-9, 1e6);
-        l.sigma_s = rgb(r, "sigma_s", 0.0, 1e6);
-        l.g = r.number_or("g", 0.0, -0.99, 0.99);
-        l.eta = r.number_or("eta", 1.3, 1.0, 3.0);
-        l.thickness = r.has("thickness_mm") ? r.number("thickness_mm", 1e-4, 1e4)
-                                            : std::numeric_limits<double>::infinity();
-        l.roughness = r.number_or("roughness", 0.0, 0.0, 2.0);
+        l.sigma_a = rgb(r, "sigma_a");
+        l.sigma_s = rgb(r, "sigma_s");
+        l.g = r.number("g");
+        l.eta = r.number("eta");
+        l.thickness = r.has("thickness_mm") ? r.number("thickness_mm") : std::numeric_limits<double>::infinity();
+        l.roughness = r.number("roughness");
         m.layers = {l};
     }
     // The stack seen from below (the back of a leaf): the layers in reverse,
     // each index relative to the one it now lies under.
-    if (r.boolean_or("flip", false)) {
+    if (r.boolean("flip")) {
         std::vector<optics::LayerSpec> flipped(m.layers.rbegin(), m.layers.rend());
         double index = 1.0;
         std::vector<double> absolute;
@@ -296,13 +299,13 @@ ProfileMaterial read_profile_material(JsonReader& r) {
         m.layers = std::move(flipped);
     }
     if (m.model == "multipole") {
-        m.max_dipole_pairs = r.integer_or("max_dipole_pairs", m.max_dipole_pairs, 1, 1 << 20);
+        m.max_dipole_pairs = r.integer("max_dipole_pairs");
         m.max_pairs_field = r.field("max_dipole_pairs");
     }
     if (m.model == "mc") {
-        m.photons = r.integer_or("photons", int(m.photons), 1000, 100000000);
-        m.seed = uint64_t(r.integer_or("seed", 1, 0, 1 << 30));
-        m.mc_r_max = r.number_or("mc_r_max_mm", m.mc_r_max, 1e-3, 1e4);
+        m.photons = r.integer("photons");
+        m.seed = uint64_t(r.integer("seed"));
+        m.mc_r_max = r.number("mc_r_max_mm");
     }
     if ((m.model == "dipole" || m.model == "multipole") && m.layers.size() != 1)
         throw InputError("field '" + r.field("model") + "': the " + m.model +

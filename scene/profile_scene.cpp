@@ -24,8 +24,6 @@ namespace st {
 
 namespace {
 
-constexpr int kMaxTargetSize = 4096;
-
 Texture target_texture(const std::string& sampler, const std::string& target) {
     Texture t;
     t.sampler = sampler;
@@ -54,7 +52,7 @@ Pass texture_space_pass(const std::string& target, int size, const ProfileMesh& 
 }
 
 glm::vec3 unit3(JsonReader& r, const std::string& key) {
-    const std::vector<double> v = r.numbers(key, 3, 3, -1e6, 1e6);
+    const std::vector<double> v = r.numbers(key);
     const glm::dvec3 d(v[0], v[1], v[2]);
     if (!(glm::length(d) > 1e-12)) throw InputError("field '" + r.field(key) + "' must not be the zero vector");
     return glm::vec3(glm::normalize(d));
@@ -62,6 +60,7 @@ glm::vec3 unit3(JsonReader& r, const std::string& key) {
 
 }  // namespace
 
+// Every field's domain and default: scene/profile_space.cpp.
 ProfileSceneSpec read_profile_scene(JsonReader& scene) {
     ProfileSceneSpec spec;
     JsonReader material_r = scene.object("material");
@@ -70,36 +69,37 @@ ProfileSceneSpec read_profile_scene(JsonReader& scene) {
     JsonReader geometry_r = scene.object("geometry");
     spec.shape = read_profile_shape(geometry_r);
     spec.thickness_map = read_thickness_map(geometry_r, spec.shape);
-    spec.texture_size = geometry_r.integer_or("texture_size", 256, 4, kMaxTargetSize);
+    spec.texture_size = geometry_r.integer("texture_size");
     geometry_r.finish();
 
     JsonReader view_r = scene.object("view");
-    spec.view_angle = view_r.number_or("angle_deg", 30.0, 0.0, 89.0) * std::numbers::pi / 180.0;
-    spec.view_azimuth = view_r.number_or("azimuth_deg", -90.0, -360.0, 360.0) * std::numbers::pi / 180.0;
+    spec.view_angle = view_r.number("angle_deg") * std::numbers::pi / 180.0;
+    spec.view_azimuth = view_r.number("azimuth_deg") * std::numbers::pi / 180.0;
     const double extent = spec.shape.kind == "ellipsoid"
                               ? 2.0 * std::max({spec.shape.radii.x, spec.shape.radii.y, spec.shape.radii.z})
                               : spec.shape.size_mm;
-    spec.view_distance = view_r.number_or("distance_mm", 2.0 * extent, 1e-3, 1e6);
-    spec.fov = view_r.number_or("fov_deg", 45.0, 1.0, 120.0) * std::numbers::pi / 180.0;
+    // By default twice the shape's extent.
+    spec.view_distance = view_r.has("distance_mm") ? view_r.number("distance_mm") : 2.0 * extent;
+    spec.fov = view_r.number("fov_deg") * std::numbers::pi / 180.0;
     view_r.finish();
 
     // A directional light; its pattern (a spot, a shadow edge) as
     // irradiance.frag describes it.
     JsonReader light_r = scene.object("light");
     spec.light_direction = unit3(light_r, "direction");
-    const std::vector<double> e0 = light_r.numbers("irradiance", 1, 3, 0.0, 1e6);
+    const std::vector<double> e0 = light_r.numbers("irradiance");
     if (e0.size() == 2) throw InputError("field 'light.irradiance' needs one value or three (R, G, B)");
     spec.irradiance = e0.size() == 3 ? glm::vec3(float(e0[0]), float(e0[1]), float(e0[2])) : glm::vec3(float(e0[0]));
     if (auto sp = light_r.object_if("spot")) {
-        const std::vector<double> c = sp->numbers("centre_mm", 2, 2, -1e6, 1e6);
-        spec.spot = glm::vec4(float(c[0]), float(c[1]), float(sp->number("radius_mm", 1e-6, 1e6)), 0.0f);
+        const std::vector<double> c = sp->numbers("centre_mm");
+        spec.spot = glm::vec4(float(c[0]), float(c[1]), float(sp->number("radius_mm")), 0.0f);
         sp->finish();
     }
     if (auto e = light_r.object_if("edge")) {
-        const std::vector<double> n = e->numbers("normal", 2, 2, -1e6, 1e6);
+        const std::vector<double> n = e->numbers("normal");
         const double len = std::hypot(n[0], n[1]);
         if (!(len > 1e-12)) throw InputError("field 'light.edge.normal' must not be the zero vector");
-        spec.edge = glm::vec4(float(n[0] / len), float(n[1] / len), float(e->number("offset_mm", -1e6, 1e6)), 1.0f);
+        spec.edge = glm::vec4(float(n[0] / len), float(n[1] / len), float(e->number("offset_mm")), 1.0f);
         e->finish();
     }
     light_r.finish();
@@ -111,14 +111,12 @@ ProfileSceneSpec read_profile_scene(JsonReader& scene) {
             throw InputError("field '" + scene.field("albedo") + "': texturing needs a generated shape (slab, sheet, "
                              "ellipsoid); a mesh has no exact surface here");
     }
-    if (auto g = scene.object_if("gather")) {
-        GatherSettings& gather = spec.gather;
-        gather.pattern = g->choice_or("pattern", gather.pattern, {"importance", "disk"});
-        gather.samples = g->integer_or("samples", gather.samples, 1, kMaxGatherSamples);
-        gather.table_size = g->integer_or("table_size", gather.table_size, 2, 65536);
-        gather.tail_fraction = g->number_or("tail_fraction", gather.tail_fraction, 1e-9, 0.5);
-        g->finish();
-    }
+    JsonReader g = scene.object_or_defaults("gather");
+    spec.gather.pattern = g.choice("pattern");
+    spec.gather.samples = g.integer("samples");
+    spec.gather.table_size = g.integer("table_size");
+    spec.gather.tail_fraction = g.number("tail_fraction");
+    g.finish();
     return spec;
 }
 

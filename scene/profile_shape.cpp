@@ -64,25 +64,26 @@ ProfileMesh grid_mesh(const ProfileShape& shape, int nu, int nv) {
 
 }  // namespace
 
+// Every field's domain and default: scene/profile_space.cpp.
 ProfileShape read_profile_shape(JsonReader& geometry) {
     ProfileShape s;
-    s.kind = geometry.choice_or("shape", "slab", {"slab", "sheet", "ellipsoid", "mesh"});
+    s.kind = geometry.choice("shape");
     if (s.kind == "mesh") {
         s.mesh = std::make_shared<const ProfileMesh>(
-            read_mesh_file(geometry.string("mesh_file"), geometry.field("mesh_file")));
+            read_mesh_file(geometry.text("mesh_file"), geometry.field("mesh_file")));
         // The view's default distance: twice the mesh's largest extent.
         const glm::dvec3 extent = s.mesh->bounds.back() - s.mesh->bounds.front();
         s.size_mm = std::max({extent.x, extent.y, extent.z, 1e-3});
         return s;
     }
-    s.size_mm = geometry.number_or("size_mm", 40.0, 1e-3, 1e5);
-    if (s.kind == "sheet") s.bend_deg = geometry.number_or("bend_deg", 0.0, 0.0, 340.0);
+    s.size_mm = geometry.number("size_mm");
+    if (s.kind == "sheet") s.bend_deg = geometry.number("bend_deg");
     if (s.kind == "ellipsoid") {
-        const std::vector<double> r = geometry.numbers("radii_mm", 3, 3, 1e-3, 1e5);
+        const std::vector<double> r = geometry.numbers("radii_mm");
         s.radii = glm::dvec3(r[0], r[1], r[2]);
-        s.seam_azimuth_deg = geometry.number_or("seam_azimuth_deg", 90.0, -360.0, 360.0);
+        s.seam_azimuth_deg = geometry.number("seam_azimuth_deg");
     }
-    if (s.curved()) s.segments = geometry.integer_or("segments", 64, 4, 1024);
+    if (s.curved()) s.segments = geometry.integer("segments");
     return s;
 }
 

@@ -15,9 +15,10 @@ ThicknessMap read_thickness_map(JsonReader& geometry, const ProfileShape& shape)
     if (!t) return map;
     if (shape.kind == "ellipsoid" || shape.kind == "mesh")
         throw InputError("field '" + geometry.field("thickness_map") + "': veins are laid out on a slab or a sheet");
-    map.height_mm = t->number("height_mm", 1e-6, 1e3);
-    map.vein_spacing_mm = t->number_or("vein_spacing_mm", map.vein_spacing_mm, 1e-3, 1e5);
-    map.vein_width_mm = t->number_or("vein_width_mm", map.vein_width_mm, 1e-4, 1e4);
+    // Domains and defaults: scene/profile_space.cpp.
+    map.height_mm = t->number("height_mm");
+    map.vein_spacing_mm = t->number("vein_spacing_mm");
+    map.vein_width_mm = t->number("vein_width_mm");
     t->finish();
     return map;
 }

@@ -12,4 +12,13 @@ const ParamSpace& thin_slab_space();
 const ParamSpace& relief_space();
 const ParamSpace& profile_space();
 
+// Blocks of fields more than one kind declares (scene/shared_spaces.cpp), to
+// include under a prefix. A procedural texture (scene/texture_patterns.h),
+// without its `sampler`; `render_targets`: it may name one instead.
+ParamSpace pattern_texture_fields(bool render_targets);
+// The list of triangles (scene/triangle_list.h), under "triangles": positions
+// in pixels only (else clip space too), white when no colour is given, uvs
+// always (else only with a texture).
+ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs_always);
+
 }  // namespace st

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "scene/input_error.h"
+#include "scene/param_space.h"
 #include "texture/mip_generation.h"
 
 namespace st {
@@ -74,50 +75,51 @@ MipFilter mip_filter_named(const std::string& name) {
 Texture read_pattern_texture(JsonReader& r, const std::string& sampler) {
     Texture t;
     t.sampler = sampler;
-    const std::string format = r.choice_or("format", "rgba32f", {"rgba8", "r32f", "rgba16f", "rgba32f"});
+    // Every field's domain and default: pattern_texture_fields() in scene/shared_spaces.cpp.
+    const std::string format = r.choice("format");
     t.format = format == "rgba8"     ? TextureFormat::RGBA8
                : format == "r32f"    ? TextureFormat::R32F
                : format == "rgba16f" ? TextureFormat::RGBA16F
                                      : TextureFormat::RGBA32F;
-    const std::vector<std::string> wraps = {"repeat", "clamp", "mirrored_repeat"};
-    const std::string wrap = r.choice_or("wrap", "repeat", wraps);
-    t.wrap_s = wrap_named(r.choice_or("wrap_s", wrap, wraps));
-    t.wrap_t = wrap_named(r.choice_or("wrap_t", wrap, wraps));
-    const std::string filter = r.choice_or("filter", "linear", {"linear", "nearest"});
-    t.mag_filter = filter_named(r.choice_or("mag_filter", filter, {"linear", "nearest"}));
-    const std::string min = r.choice_or("min_filter", filter,
-                                        {"nearest", "linear", "nearest_mipmap_nearest", "linear_mipmap_nearest",
-                                         "nearest_mipmap_linear", "linear_mipmap_linear"});
+    // wrap_s and wrap_t default to wrap, mag_filter and min_filter to filter.
+    const std::string wrap = r.choice("wrap");
+    t.wrap_s = wrap_named(r.has("wrap_s") ? r.choice("wrap_s") : wrap);
+    t.wrap_t = wrap_named(r.has("wrap_t") ? r.choice("wrap_t") : wrap);
+    const std::string filter = r.choice("filter");
+    t.mag_filter = filter_named(r.has("mag_filter") ? r.choice("mag_filter") : filter);
+    const std::string min = r.has("min_filter") ? r.choice("min_filter") : filter;
     t.min_filter = filter_named(min);
     t.mip_filter = mip_filter_named(min);
-    t.lod_bias = float(r.number_or("lod_bias", 0.0, -1000.0, 1000.0));
-    t.min_lod = float(r.number_or("min_lod", -1000.0, -1000.0, 1000.0));
-    t.max_lod = float(r.number_or("max_lod", 1000.0, -1000.0, 1000.0));
-    if (r.has("target")) {
+    t.lod_bias = float(r.number("lod_bias"));
+    t.min_lod = float(r.number("min_lod"));
+    t.max_lod = float(r.number("max_lod"));
+    // Where the kind declares `target` (a kind with render targets); where
+    // not, a `target` is an unknown field.
+    if (r.space()->find(ParamSpace::normalise(r.field("target"))) && r.has("target")) {
         // A render target: its size, format and levels are the target's.
-        t.target = r.string("target");
+        t.target = r.text("target");
         r.finish();
         return t;
     }
-    t.width = r.integer("width", 1, 4096);
-    t.height = r.integer("height", 1, 4096);
-    t.cube = r.boolean_or("cube", false);
+    t.width = r.integer("width");
+    t.height = r.integer("height");
+    t.cube = r.boolean("cube");
     if (t.cube && t.width != t.height)
         throw InputError("field '" + r.field("height") + "': a cube map's faces must be square (width " +
                          std::to_string(t.width) + ", height " + std::to_string(t.height) + ")");
     if (t.cube && t.min_filter != t.mag_filter)
         throw InputError("field '" + r.field("mag_filter") +
                          "': a cube map needs the same min and mag filter (the switch is not modelled)");
-    const bool checker = r.choice_or("pattern", "noise", {"checker", "noise"}) == "checker";
-    const auto seed = uint32_t(r.integer_or("seed", 1, 0, 1 << 30));
+    const bool checker = r.choice("pattern") == "checker";
+    const auto seed = uint32_t(r.integer("seed"));
     fill_faces(t, t.width, t.height, checker, seed, t.texels8, t.texels32);
 
     // Mip levels: none, a box filter of level 0 ("box"), or each level its
     // own pattern ("distinct", seeded per level), which shows in every texel
     // which level a sample took.
-    const std::string mipmaps = r.choice_or("mipmaps", "none", {"none", "box", "distinct"});
+    const std::string mipmaps = r.choice("mipmaps");
     const int full = full_chain_levels(t.width, t.height);
-    const int levels = mipmaps == "none" ? 1 : r.integer_or("levels", full, 1, full);
+    const int levels = mipmaps == "none" ? 1 : r.has("levels") ? r.integer_in("levels", 1, full) : full;
     if (mipmaps == "box") generate_box_mips(t, levels);
     if (mipmaps == "distinct")
         for (int level = 1; level < levels; ++level) {

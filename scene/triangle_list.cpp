@@ -1,13 +1,16 @@
 // triangle_list.cpp: see triangle_list.h.
 #include "scene/triangle_list.h"
 
+#include <algorithm>
+
 #include "scene/input_error.h"
+#include "scene/param_space.h"
 
 namespace st {
 
 namespace {
 
-constexpr size_t kMaxTriangles = 1 << 20;
+constexpr size_t kCorners = 3;  // each of positions, colours and uvs: one entry per corner
 
 // Pixel positions map to clip space with w = 1: x_clip = x * (2/W) - 1. For
 // power-of-two sizes every step is exact, so a vertex given at 12.5 lands
@@ -32,47 +35,59 @@ glm::vec4 rgba(const std::vector<double>& v) {
 
 // Error paths are built only when a value is refused (JsonReader's lazy
 // checked_number): a mesh of a million triangles has eighteen million
-// numbers, and naming each one cost more than reading it.
+// numbers, and naming each one cost more than reading it. For the same
+// reason the per-triangle fields are read with their declared lengths and
+// ranges (triangle_list_fields() in scene/shared_spaces.cpp), taken from the
+// space once here rather than looked up per triangle.
 void read_triangle_list(JsonReader& scene, SceneSize size, TriangleListFormat format, DrawCall& draw) {
+    const FieldSpec& list = scene.spec("triangles");
+    const FieldSpec& pos = scene.spec("triangles[].positions");
+    const FieldSpec& one = scene.spec("triangles[].colour");
+    const FieldSpec& each = scene.spec("triangles[].colours");
+    const FieldSpec* uv = format.uvs ? &scene.spec("triangles[].uvs") : nullptr;
+    // Pixels give x, y and at most a window depth, which lies in [0, 1].
+    const size_t pos_max = format.pixels ? std::min<size_t>(pos.max_len, 3) : pos.max_len;
+    const std::vector<double> white = format.colour_optional ? one.fallback.get<std::vector<double>>()
+                                                             : std::vector<double>();
     if (scene.has("triangles")) {  // (a missing or malformed list is refused just below)
-        const size_t corners = 3 * scene.array("triangles", 1, kMaxTriangles).size();
+        const size_t corners = 3 * scene.array("triangles", list.min_len, list.max_len).size();
         draw.indices.reserve(draw.indices.size() + corners);
         draw.vertices.data.reserve(draw.vertices.data.size() + corners * (format.uvs ? 3 : 2));
     }
     std::vector<double> p;
     std::vector<double> colours[3];
-    scene.for_each_object("triangles", 1, kMaxTriangles, [&](JsonReader& t) {
-        const auto& positions = t.array("positions", 3, 3);
+    scene.for_each_object("triangles", list.min_len, list.max_len, [&](JsonReader& t) {
+        const auto& positions = t.array("positions", kCorners, kCorners);
         if (format.colour_optional && !t.has("colour") && !t.has("colours")) {
-            for (auto& colour : colours) colour.assign({1.0, 1.0, 1.0, 1.0});
+            for (auto& colour : colours) colour = white;
         } else if (t.has("colour")) {
-            const auto one = t.numbers("colour", 3, 4, -kHuge, kHuge);
-            for (auto& colour : colours) colour = one;
+            const auto c = t.numbers("colour", one.min_len, one.max_len, one.lo, one.hi);
+            for (auto& colour : colours) colour = c;
         } else {
-            const auto& cs = t.array("colours", 3, 3);
-            for (size_t i = 0; i < 3; ++i) {
+            const auto& cs = t.array("colours", kCorners, kCorners);
+            for (size_t i = 0; i < kCorners; ++i) {
                 auto where = [&] { return t.field("colours") + "." + std::to_string(i); };
-                if (!cs[i].is_array() || cs[i].size() < 3 || cs[i].size() > 4)
-                    throw InputError("field '" + where() + "' must be an array of 3 or 4 numbers");
+                if (!cs[i].is_array() || cs[i].size() < each.min_len || cs[i].size() > each.max_len)
+                    throw InputError("field '" + where() + "' must be an array of " + std::to_string(each.min_len) +
+                                     " or " + std::to_string(each.max_len) + " numbers");
                 colours[i].clear();
                 for (size_t k = 0; k < cs[i].size(); ++k)
                     colours[i].push_back(JsonReader::checked_number(
-                        cs[i][k], [&] { return where() + "." + std::to_string(k); }, -kHuge, kHuge));
+                        cs[i][k], [&] { return where() + "." + std::to_string(k); }, each.lo, each.hi));
             }
         }
-        const nlohmann::json* uvs = format.uvs ? &t.array("uvs", 3, 3) : nullptr;
-        for (size_t i = 0; i < 3; ++i) {
+        const nlohmann::json* uvs = uv ? &t.array("uvs", kCorners, kCorners) : nullptr;
+        for (size_t i = 0; i < kCorners; ++i) {
             auto where = [&] { return t.field("positions") + "." + std::to_string(i); };
-            const size_t max_len = format.pixels ? 3 : 4;
-            if (!positions[i].is_array() || positions[i].size() < 2 || positions[i].size() > max_len)
-                throw InputError("field '" + where() + "' must be an array of 2 to " +
-                                 std::to_string(max_len) + " numbers");
+            if (!positions[i].is_array() || positions[i].size() < pos.min_len || positions[i].size() > pos_max)
+                throw InputError("field '" + where() + "' must be an array of " + std::to_string(pos.min_len) + " to " +
+                                 std::to_string(pos_max) + " numbers");
             p.clear();
             for (size_t k = 0; k < positions[i].size(); ++k) {
                 const bool is_depth = format.pixels && k == 2;
                 p.push_back(JsonReader::checked_number(positions[i][k],
                                                        [&] { return where() + "." + std::to_string(k); },
-                                                       is_depth ? 0.0 : -kHuge, is_depth ? 1.0 : kHuge));
+                                                       is_depth ? 0.0 : pos.lo, is_depth ? 1.0 : pos.hi));
             }
             // As a float, which is what the pipeline sees: 1e-50 is 0 there.
             if (!format.pixels && p.size() == 4 && float(p[3]) == 0.0f)
@@ -82,12 +97,13 @@ void read_triangle_list(JsonReader& scene, SceneSize size, TriangleListFormat fo
             draw.vertices.data.push_back(rgba(colours[i]));
             if (uvs) {
                 auto uv_where = [&] { return t.field("uvs") + "." + std::to_string(i); };
-                const auto& uv = (*uvs)[i];
-                if (!uv.is_array() || uv.size() != 2)
-                    throw InputError("field '" + uv_where() + "' must be an array of 2 numbers");
+                const auto& c = (*uvs)[i];
+                if (!c.is_array() || c.size() < uv->min_len || c.size() > uv->max_len)
+                    throw InputError("field '" + uv_where() + "' must be an array of " + std::to_string(uv->max_len) +
+                                     " numbers");
                 draw.vertices.data.push_back(glm::vec4(
-                    float(JsonReader::checked_number(uv[0], [&] { return uv_where() + ".0"; }, -kHuge, kHuge)),
-                    float(JsonReader::checked_number(uv[1], [&] { return uv_where() + ".1"; }, -kHuge, kHuge)),
+                    float(JsonReader::checked_number(c[0], [&] { return uv_where() + ".0"; }, uv->lo, uv->hi)),
+                    float(JsonReader::checked_number(c[1], [&] { return uv_where() + ".1"; }, uv->lo, uv->hi)),
                     0.0f, 1.0f));
             }
         }

@@ -22,11 +22,10 @@ Frame build_triangles_scene(JsonReader& scene, SceneSize size) {
     Pass pass;
     pass.width = size.width;
     pass.height = size.height;
-    const auto clear = scene.has("clear_colour") ? scene.numbers("clear_colour", 4, 4, -kHuge, kHuge)
-                                                 : std::vector<double>{0, 0, 0, 0};
-    pass.clear_colour = rgba(clear);
+    // Every field's domain and default: scene/triangles_space.cpp.
+    pass.clear_colour = rgba(scene.numbers("clear_colour"));
 
-    const bool pixels = scene.choice_or("coordinates", "clip", {"clip", "pixels"}) == "pixels";
+    const bool pixels = scene.choice("coordinates") == "pixels";
     DrawCall draw;
     // With a texture, the textured program (colour x texel, per-vertex uvs).
     const bool textured = scene.has("texture");
@@ -35,8 +34,8 @@ Frame build_triangles_scene(JsonReader& scene, SceneSize size) {
         draw.textures.push_back(read_pattern_texture(tex, "tex"));
     }
     draw.vertex = draw.fragment = textured ? "textured" : "interp";
-    draw.state.depth_test = scene.boolean_or("depth_test", false);
-    draw.state.blend = parse_blend(scene.choice_or("blend", "none", {"none", "one_src_alpha", "alpha"}));
+    draw.state.depth_test = scene.boolean("depth_test");
+    draw.state.blend = parse_blend(scene.choice("blend"));
     draw.vertices.attribute_count = textured ? 3 : 2;  // position, colour[, uv]
 
     read_triangle_list(scene, size, TriangleListFormat{pixels, textured, false}, draw);

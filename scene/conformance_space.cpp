@@ -1,0 +1,79 @@
+// conformance_space.cpp: the fields of a "conformance" scene (one small
+// fragment program from glsl/conformance/ on a list of triangles, with its
+// uniforms, textures, render targets and passes; scene/conformance_scene.cpp
+// builds it), with their domains. The scene's own pass and each of `passes`
+// have the same fields, declared once below and included twice.
+#include "scene/json_reader.h"
+#include "scene/scene_spaces.h"
+
+namespace st {
+
+namespace {
+
+// What every pass says: where it draws and what.
+ParamSpace pass_fields() {
+    ParamSpace s("pass");
+    s.text("target", nullptr, "a name from `targets` (a pass before the scene's own; the scene's own draws the image)");
+    s.integer("level", 0, 12, 0, "the level of `target` drawn, below its `levels`").edge({0, 1}).only_if_present();
+    s.numbers("viewport", 4, 4, 0, 8192, nullptr,
+              "[x, y, width, height] in whole pixels within the target (level), width and height at least 1 "
+              "(default: all of it)")
+        .draws(0, 64)
+        .whole();
+    s.boolean("clear", true, "clear first; false keeps what earlier passes left (and then allows no depth test)");
+    s.numbers("clear_colour", 4, 4, -kHuge, kHuge, nlohmann::json::array({0.0, 0.0, 0.0, 0.0}),
+              "the colour the target is cleared to")
+        .draws(0, 1).edge({0, 1});
+    s.text("fragment", "required", "the program: glsl/conformance/<fragment>.frag");
+    s.object("uniforms", false, "the program's uniforms; each has a name and exactly one value", 0, 64);
+    s.text("uniforms[].name", "required", "the GLSL uniform's name");
+    // A uniform's value keeps the type its program declares: the explorer
+    // changes the one given, never adds another.
+    s.number("uniforms[].float", -kHuge, kHuge, nullptr, "a float's value").draws(-10, 10).edge({0, 1, -1})
+        .only_if_present();
+    s.numbers("uniforms[].vec2", 2, 2, -kHuge, kHuge, nullptr, "a vec2's value").draws(-10, 10).edge({0, 1})
+        .only_if_present();
+    s.numbers("uniforms[].vec3", 3, 3, -kHuge, kHuge, nullptr, "a vec3's value").draws(-10, 10).edge({0, 1})
+        .only_if_present();
+    s.numbers("uniforms[].vec4", 4, 4, -kHuge, kHuge, nullptr, "a vec4's value").draws(-10, 10).edge({0, 1})
+        .only_if_present();
+    s.integer("uniforms[].int", -(1 << 24), 1 << 24, nullptr, "an int's value (exact as a float)")
+        .draws(-100, 100).edge({0, 1, -1})
+        .only_if_present();
+    s.object("textures", false, "procedural textures or render targets, bound to units in order", 0, 8);
+    s.text("textures[].sampler", "required", "the GLSL sampler's name");
+    s.include(pattern_texture_fields(true), "textures[]");
+    s.boolean("depth_test", false, "GL_LESS against a 32-bit float depth buffer cleared to 1");
+    s.choice("blend",
+             {"zero", "one", "src_colour", "one_minus_src_colour", "src_alpha", "one_minus_src_alpha", "dst_colour",
+              "one_minus_dst_colour", "dst_alpha", "one_minus_dst_alpha"},
+             nullptr, "glBlendFuncSeparate(src_rgb, dst_rgb[, src_alpha, dst_alpha]), GL_FUNC_ADD: 2 or 4 factors")
+        .listed(2, 4);
+    s.include(triangle_list_fields(true, true, true));
+    return s;
+}
+
+}  // namespace
+
+const ParamSpace& conformance_space() {
+    static const ParamSpace space = [] {
+        ParamSpace s("conformance");
+        s.include(common_space());
+        const ParamSpace pass = pass_fields();
+        s.include(pass);
+
+        s.object("targets", false, "named render targets, each an output beside the image", 1, 16);
+        s.text("targets[].name", "required", "its name (not empty, not repeated)");
+        s.integer("targets[].width", 1, 4096, "required", "texels across").explore_at_most(512).edge({1, 2, 3, 64});
+        s.integer("targets[].height", 1, 4096, "required", "texels up").explore_at_most(512).edge({1, 2, 3, 64});
+        s.choice("targets[].format", {"rgba16f", "rgba32f"}, "rgba32f", "texel format");
+        s.integer("targets[].levels", 1, 13, 1, "mip levels, at most the full chain of width x height").edge({1, 2});
+
+        s.object("passes", false, "passes drawn before the scene's own, in order", 1, 64).explore_at_most(8);
+        s.include(pass, "passes[]");
+        return s;
+    }();
+    return space;
+}
+
+}  // namespace st

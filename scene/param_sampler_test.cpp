@@ -1,0 +1,75 @@
+// param_sampler_test.cpp: the sampler draws inside the declared domains,
+// the same for the same seed, and keeps a drawn document consistent with
+// its kind's space.
+#include "scene/param_sampler.h"
+
+#include <fstream>
+#include <set>
+
+#include <gtest/gtest.h>
+
+#include "scene/json_reader.h"
+#include "scene/scene.h"
+#include "scene/scene_sources.h"
+
+namespace st {
+namespace {
+
+nlohmann::json read_sampler_base(const std::string& path) {
+    std::ifstream in(path);
+    return parse_json(in, path);
+}
+
+TEST(ParamSampler, DrawsInsideTheDomainAndTheSameForTheSameSeed) {
+    const ParamSpace& space = *kind_space("relief");
+    const ParamSampler sampler(space);
+    const nlohmann::json base = read_sampler_base(SceneSources().find("relief-absorption")->path);
+    std::set<double> steps_seen;
+    for (uint64_t seed = 0; seed < 3000; ++seed) {
+        SampleRng a(seed), b(seed);
+        const auto drawn = sampler.draw(base, a, 3);
+        ASSERT_EQ(drawn, sampler.draw(base, b, 3));
+        ASSERT_FALSE(drawn.empty());
+        for (const Assignment& as : drawn) {
+            const FieldSpec& f = space.at(as.path);
+            ASSERT_TRUE(f.explore) << as.path;
+            const auto check = [&](const nlohmann::json& v) {
+                ASSERT_TRUE(v.is_number()) << as.path;
+                const double x = v.get<double>();
+                EXPECT_TRUE(x >= f.lo && x <= f.hi) << as.path << " = " << x;
+                if (f.type == FieldType::Integer) EXPECT_TRUE(v.is_number_integer()) << as.path;
+            };
+            if (f.type == FieldType::Number || f.type == FieldType::Integer) check(as.value);
+            if (f.type == FieldType::Numbers)
+                for (const auto& x : as.value) check(x);
+            if (f.type == FieldType::Choice)
+                EXPECT_NE(std::find(f.choices.begin(), f.choices.end(), as.value.get<std::string>()), f.choices.end());
+            if (as.path == "search.linear_steps") steps_seen.insert(as.value.get<double>());
+        }
+    }
+    // Edge draws reach both bounds of a step count.
+    EXPECT_TRUE(steps_seen.count(1));
+    EXPECT_TRUE(steps_seen.count(128));  // the explorer's cap of 512
+}
+
+TEST(ParamSampler, ApplyKeepsTheDocumentConsistentWithTheSpace) {
+    const ParamSampler sampler(*kind_space("relief"));
+    const nlohmann::json base = read_sampler_base(SceneSources().find("relief-two-layer")->path);
+    SampleRng rng(1);
+    // A row without a medium drops the medium's objects.
+    const nlohmann::json mapping = sampler.apply(base, {{"technique", "relief"}}, rng);
+    EXPECT_FALSE(mapping.contains("liquid"));
+    EXPECT_FALSE(mapping.contains("environment"));
+    EXPECT_NO_THROW(load_scene_document("t", mapping, ""));
+    // Absorption needs half distances: drawn, inside their domain.
+    const nlohmann::json absorption = sampler.apply(base, {{"technique", "absorption"}}, rng);
+    ASSERT_TRUE(absorption["liquid"].contains("half_distance"));
+    EXPECT_NO_THROW(load_scene_document("t", absorption, ""));
+    // A bound that is another field's value is met.
+    const nlohmann::json radii = sampler.apply(base, {{"liquid.min_radius", 0.3}}, rng);
+    EXPECT_GE(radii["liquid"].value("max_radius", 0.11), 0.3);
+    EXPECT_NO_THROW(load_scene_document("t", radii, ""));
+}
+
+}  // namespace
+}  // namespace st

@@ -1,0 +1,67 @@
+// shared_spaces.cpp: blocks of fields more than one kind declares (see
+// scene_spaces.h): a procedural texture (scene/texture_patterns.cpp reads
+// it) and a list of triangles (scene/triangle_list.cpp).
+#include "scene/json_reader.h"
+#include "scene/scene_spaces.h"
+
+namespace st {
+
+ParamSpace pattern_texture_fields(bool render_targets) {
+    ParamSpace s("texture");
+    const std::vector<std::string> wraps = {"repeat", "clamp", "mirrored_repeat"};
+    const std::vector<std::string> mins = {"nearest", "linear", "nearest_mipmap_nearest", "linear_mipmap_nearest",
+                                           "nearest_mipmap_linear", "linear_mipmap_linear"};
+    s.choice("format", {"rgba8", "r32f", "rgba16f", "rgba32f"}, "rgba32f", "texel format");
+    s.choice("wrap", wraps, "repeat", "both directions' wrap mode (clamp: to edge)");
+    s.choice("wrap_s", wraps, nullptr, "the s direction's (default: `wrap`)");
+    s.choice("wrap_t", wraps, nullptr, "the t direction's (default: `wrap`)");
+    s.choice("filter", {"linear", "nearest"}, "linear", "both filters");
+    s.choice("mag_filter", {"linear", "nearest"}, nullptr, "magnification filter (default: `filter`)");
+    s.choice("min_filter", mins, nullptr, "minification filter and mip filter (default: `filter`)");
+    s.number("lod_bias", -1000, 1000, 0.0, "GL_TEXTURE_LOD_BIAS").draws(-4, 4).edge({0, -0.5, 0.5});
+    s.number("min_lod", -1000, 1000, -1000.0, "GL_TEXTURE_MIN_LOD").draws(-2, 12).edge({0});
+    s.number("max_lod", -1000, 1000, 1000.0, "GL_TEXTURE_MAX_LOD").draws(-2, 12).edge({0});
+    if (render_targets)
+        s.text("target", nullptr,
+               "the texture is this render target as earlier passes left it; then only the filter, wrap and LOD "
+               "fields apply");
+    // A generated pattern (no `target`):
+    s.integer("width", 1, 4096, "required", "texels across").explore_at_most(1024).edge({1, 2, 3, 64, 65});
+    s.integer("height", 1, 4096, "required", "texels up (a cube's faces are square)").explore_at_most(1024)
+        .edge({1, 2, 3, 64, 65});
+    s.boolean("cube", false, "six square faces, sampled with seamless filtering (min and mag filter alike)");
+    s.choice("pattern", {"checker", "noise"}, "noise", "4x4-texel checks, or hashed texels with alpha in [0.5, 1)");
+    s.integer("seed", 0, 1 << 30, 1, "the noise's hash seed");
+    s.choice("mipmaps", {"none", "box", "distinct"}, "none",
+             "mip levels: none, a box filter of level 0, or each level its own pattern");
+    s.integer("levels", 1, 13, nullptr, "mip levels, at most the full chain of width x height (default: all of it)")
+        .when("mipmaps", {"box", "distinct"}).edge({1, 2});
+    return s;
+}
+
+ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs_always) {
+    ParamSpace s("triangles");
+    s.object("triangles", true, "the triangles, in draw order", 1, 1 << 20).explore_at_most(10000);
+    const std::string clip = "clip space: [x, y], [x, y, z] or [x, y, z, w] (z defaults to 0, w to 1, w must not be "
+                             "0 as a float)";
+    const std::string pixels = "window pixels (y up, origin bottom-left): [x, y] or [x, y, depth], depth in [0, 1] "
+                               "defaulting to 0.5";
+    s.numbers("triangles[].positions", 2, pixels_only ? 3 : 4, -kHuge, kHuge, "required",
+              pixels_only ? pixels : "`coordinates` \"clip\": " + clip + "; \"pixels\": " + pixels)
+        .in_rows(3).draws(-2, 2);
+    s.numbers("triangles[].colour", 3, 4, -kHuge, kHuge,
+              colour_optional ? nlohmann::json::array({1.0, 1.0, 1.0, 1.0}) : nlohmann::json(),
+              colour_optional ? "one colour for all three corners (alpha defaults to 1; no colour: white)"
+                              : "one colour for all three corners, instead of `colours` (alpha defaults to 1)")
+        .draws(0, 1).edge({0, 1}).only_if_present();  // one of colour, colours: the explorer keeps the one given
+    s.numbers("triangles[].colours", 3, 4, -kHuge, kHuge, nullptr,
+              colour_optional ? "per-corner colours (alpha defaults to 1), instead of `colour`"
+                              : "per-corner colours (alpha defaults to 1); this or `colour` is required")
+        .in_rows(3).draws(0, 1).edge({0, 1}).only_if_present();
+    s.numbers("triangles[].uvs", 2, 2, -kHuge, kHuge, uvs_always ? nlohmann::json("required") : nlohmann::json(),
+              uvs_always ? "per-corner texture coordinates" : "per-corner texture coordinates, required with `texture`")
+        .in_rows(3).draws(-2, 2).edge({0, 1}).only_if_present();  // only with a texture
+    return s;
+}
+
+}  // namespace st
