@@ -291,4 +291,20 @@ nlohmann::json ParamSampler::apply(const nlohmann::json& base, const std::vector
     return doc;
 }
 
+std::vector<Assignment> shrink_assignments(std::vector<Assignment> kept,
+                                           const std::function<bool(const std::vector<Assignment>&)>& fails) {
+    for (bool dropped = true; dropped && kept.size() > 1;) {
+        dropped = false;
+        for (size_t j = 0; j < kept.size(); ++j) {
+            std::vector<Assignment> fewer = kept;
+            fewer.erase(fewer.begin() + long(j));
+            if (fails(fewer)) {
+                kept = std::move(fewer), dropped = true;
+                break;
+            }
+        }
+    }
+    return kept;
+}
+
 }  // namespace st

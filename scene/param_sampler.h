@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,12 @@ private:
     nlohmann::json value_or_default(const nlohmann::json& doc, const std::string& path) const;
     const ParamSpace& space_;
 };
+
+// The fewest of `drawn` that still fail: drop one assignment at a time,
+// keep the drop while `fails` holds, until no single drop does (a
+// 1-minimal set; `fails(drawn)` is assumed).
+std::vector<Assignment> shrink_assignments(std::vector<Assignment> drawn,
+                                           const std::function<bool(const std::vector<Assignment>&)>& fails);
 
 // The value at a dotted concrete path, or null.
 const nlohmann::json* json_at(const nlohmann::json& doc, const std::string& path);

@@ -3,6 +3,7 @@
 // its kind's space.
 #include "scene/param_sampler.h"
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 
@@ -69,6 +70,23 @@ TEST(ParamSampler, ApplyKeepsTheDocumentConsistentWithTheSpace) {
     const nlohmann::json radii = sampler.apply(base, {{"liquid.min_radius", 0.3}}, rng);
     EXPECT_GE(radii["liquid"].value("max_radius", 0.11), 0.3);
     EXPECT_NO_THROW(load_scene_document("t", radii, ""));
+}
+
+TEST(ParamSampler, ShrinksToTheFieldsThatFail) {
+    const std::vector<Assignment> drawn = {{"a", 1}, {"b", 2}, {"c", 3}, {"d", 4}};
+    // Fails while both b and d are there: shrunk to exactly those.
+    const auto has = [](const std::vector<Assignment>& as, const std::string& p) {
+        return std::any_of(as.begin(), as.end(), [&](const Assignment& a) { return a.path == p; });
+    };
+    int tries = 0;
+    const auto kept = shrink_assignments(drawn, [&](const std::vector<Assignment>& as) {
+        ++tries;
+        return has(as, "b") && has(as, "d");
+    });
+    EXPECT_EQ(kept, (std::vector<Assignment>{{"b", 2}, {"d", 4}}));
+    EXPECT_LE(tries, 10);
+    // A single failing field stays.
+    EXPECT_EQ(shrink_assignments({{"x", 0}}, [](const auto&) { return true; }).size(), 1u);
 }
 
 }  // namespace

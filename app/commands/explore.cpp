@@ -242,21 +242,20 @@ int cmd_explore(const ExploreOptions& options, const CommonOptions& common) {
             continue;
         }
         // Shrink: drop one field at a time while the case still fails.
-        std::vector<Assignment> kept = drawn;
         CaseResult last = r;
-        for (bool dropped = true; dropped && kept.size() > 1;) {
-            dropped = false;
-            for (size_t j = 0; j < kept.size(); ++j) {
-                std::vector<Assignment> fewer = kept;
-                fewer.erase(fewer.begin() + long(j));
-                progress.note("shrinking to " + std::to_string(fewer.size()) + " fields");
-                fs::remove_all(dir);
-                const CaseResult s = explorer.run(name, document(fewer), dir.string());
-                if (Explorer::failing(s)) {
-                    kept = std::move(fewer), last = s, dropped = true;
-                    break;
-                }
-            }
+        const std::vector<Assignment> kept = shrink_assignments(drawn, [&](const std::vector<Assignment>& fewer) {
+            progress.note("shrinking to " + std::to_string(fewer.size()) + " fields");
+            fs::remove_all(dir);
+            const CaseResult s = explorer.run(name, document(fewer), dir.string());
+            if (!Explorer::failing(s)) return false;
+            last = s;
+            return true;
+        });
+        // The images left are the shrunk case's (the last attempt may have
+        // passed and taken its folder with it).
+        if (drawn.size() > 1) {
+            fs::remove_all(dir);
+            explorer.run(name, document(kept), dir.string());
         }
         // The reproducer: the whole scene, its story in its description.
         nlohmann::json repro = document(kept);
