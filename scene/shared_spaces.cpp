@@ -49,16 +49,24 @@ ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs
     s.numbers("triangles[].positions", 2, pixels_only ? 3 : 4, -kHuge, kHuge, "required",
               pixels_only ? pixels : "`coordinates` \"clip\": " + clip + "; \"pixels\": " + pixels)
         .in_rows(3).draws(-2, 2);
-    s.numbers("triangles[].colour", 3, 4, -kHuge, kHuge,
+    // Colours and texture coordinates end at a million (issue 26, found by
+    // explore --seed 2026 on triangles): colours of 1e30 made the blends'
+    // products (colour x alpha) infinite on both pipelines, and texture
+    // coordinates past 1e8 part llvmpipe's nearest texel from the twin's
+    // (max_diff_8bit 139-224; the cause is not traced yet). A million is far
+    // past any radiance or repeat count a scene needs: at 1e6 a single float
+    // no longer tells apart the texels of a 16-texel map's repeat.
+    constexpr double kMaxAttribute = 1e6;
+    s.numbers("triangles[].colour", 3, 4, -kMaxAttribute, kMaxAttribute,
               colour_optional ? nlohmann::json::array({1.0, 1.0, 1.0, 1.0}) : nlohmann::json(),
               colour_optional ? "one colour for all three corners (alpha defaults to 1; no colour: white)"
                               : "one colour for all three corners, instead of `colours` (alpha defaults to 1)")
         .draws(0, 1).edge({0, 1}).only_if_present();  // one of colour, colours: the explorer keeps the one given
-    s.numbers("triangles[].colours", 3, 4, -kHuge, kHuge, nullptr,
+    s.numbers("triangles[].colours", 3, 4, -kMaxAttribute, kMaxAttribute, nullptr,
               colour_optional ? "per-corner colours (alpha defaults to 1), instead of `colour`"
                               : "per-corner colours (alpha defaults to 1); this or `colour` is required")
         .in_rows(3).draws(0, 1).edge({0, 1}).only_if_present();
-    s.numbers("triangles[].uvs", 2, 2, -kHuge, kHuge, uvs_always ? nlohmann::json("required") : nlohmann::json(),
+    s.numbers("triangles[].uvs", 2, 2, -kMaxAttribute, kMaxAttribute, uvs_always ? nlohmann::json("required") : nlohmann::json(),
               uvs_always ? "per-corner texture coordinates" : "per-corner texture coordinates, required with `texture`")
         .in_rows(3).draws(-2, 2).edge({0, 1}).only_if_present();  // only with a texture
     return s;

@@ -687,6 +687,11 @@ PY
     n=$(grep -c '"pass":true' "$work/regressions.jsonl")
     [ "$n" -eq "$(ls "$(dirname "$0")"/regressions/*.json | wc -l)" ] || fail "not every regression case ran"
     echo "ok   $n regression cases pass"
+    # Domains the explorer led to (docs/explore.md): refused with one line.
+    expect_refused "a colour of 1e30 (blends overflow to infinity)" "triangles.1.colours" \
+      "$bin" compare triangles-alpha-blend --set 'triangles.1.colours=[[1,1,1,1],[1,1,1,1e30],[1,1,1,1]]'
+    expect_refused "texture coordinates of 1e9 (nearest texels part)" "triangles.0.uvs" \
+      "$bin" compare triangles-texture-rgba32f-nearest-clamp-pot --set 'triangles.0.uvs=[[1e9,1e9],[0,1e9],[0,0.5]]'
     ;;
 
   scene_docs)
