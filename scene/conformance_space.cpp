@@ -21,7 +21,7 @@ ParamSpace pass_fields() {
         .draws(0, 64)
         .whole();
     s.boolean("clear", true, "clear first; false keeps what earlier passes left (and then allows no depth test)");
-    s.numbers("clear_colour", 4, 4, -kHuge, kHuge, nlohmann::json::array({0.0, 0.0, 0.0, 0.0}),
+    s.numbers("clear_colour", 4, 4, -kMaxAttribute, kMaxAttribute, nlohmann::json::array({0.0, 0.0, 0.0, 0.0}),
               "the colour the target is cleared to")
         .draws(0, 1).edge({0, 1});
     s.text("fragment", "required", "the program: glsl/conformance/<fragment>.frag");

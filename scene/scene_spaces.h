@@ -6,6 +6,10 @@
 
 namespace st {
 
+// The largest colour (clear colours included) and texture coordinate a
+// triangle list takes: scene/shared_spaces.cpp says why.
+inline constexpr double kMaxAttribute = 1e6;
+
 const ParamSpace& triangles_space();
 const ParamSpace& conformance_space();
 const ParamSpace& thin_slab_space();

@@ -29,7 +29,8 @@ ParamSpace pattern_texture_fields(bool render_targets) {
     s.integer("width", 1, 4096, "required", "texels across").explore_at_most(1024).edge({1, 2, 3, 64, 65});
     s.integer("height", 1, 4096, "required", "texels up (a cube's faces are square)").explore_at_most(1024)
         .edge({1, 2, 3, 64, 65});
-    s.boolean("cube", false, "six square faces, sampled with seamless filtering (min and mag filter alike)");
+    s.boolean("cube", false, "six square faces, sampled with seamless filtering (min and mag filter alike)")
+        .not_explored();  // the program's sampler type (sampler2D or samplerCube) decides it
     s.choice("pattern", {"checker", "noise"}, "noise", "4x4-texel checks, or hashed texels with alpha in [0.5, 1)");
     s.integer("seed", 0, 1 << 30, 1, "the noise's hash seed");
     s.choice("mipmaps", {"none", "box", "distinct"}, "none",
@@ -55,8 +56,8 @@ ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs
     // coordinates past 1e8 part llvmpipe's nearest texel from the twin's
     // (max_diff_8bit 139-224; the cause is not traced yet). A million is far
     // past any radiance or repeat count a scene needs: at 1e6 a single float
-    // no longer tells apart the texels of a 16-texel map's repeat.
-    constexpr double kMaxAttribute = 1e6;
+    // no longer tells apart the texels of a 16-texel map's repeat. A clear
+    // colour likewise (1e30 under a blend reading the destination).
     s.numbers("triangles[].colour", 3, 4, -kMaxAttribute, kMaxAttribute,
               colour_optional ? nlohmann::json::array({1.0, 1.0, 1.0, 1.0}) : nlohmann::json(),
               colour_optional ? "one colour for all three corners (alpha defaults to 1; no colour: white)"

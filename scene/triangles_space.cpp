@@ -13,7 +13,7 @@ const ParamSpace& triangles_space() {
         s.include(common_space());
         s.include(triangle_list_fields(false, false, false));
         s.choice("coordinates", {"clip", "pixels"}, "clip", "how positions are given: clip space, or window pixels");
-        s.numbers("clear_colour", 4, 4, -kHuge, kHuge, nlohmann::json::array({0.0, 0.0, 0.0, 0.0}),
+        s.numbers("clear_colour", 4, 4, -kMaxAttribute, kMaxAttribute, nlohmann::json::array({0.0, 0.0, 0.0, 0.0}),
                   "the colour the target is cleared to")
             .draws(0, 1).edge({0, 1});
         s.boolean("depth_test", false, "GL_LESS against a 32-bit float depth buffer cleared to 1");
