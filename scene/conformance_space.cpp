@@ -28,14 +28,16 @@ ParamSpace pass_fields() {
     s.object("uniforms", false, "the program's uniforms; each has a name and exactly one value", 0, 64);
     s.text("uniforms[].name", "required", "the GLSL uniform's name");
     // A uniform's value keeps the type its program declares: the explorer
-    // changes the one given, never adds another.
-    s.number("uniforms[].float", -kHuge, kHuge, nullptr, "a float's value").draws(-10, 10).edge({0, 1, -1})
+    // changes the one given, never adds another. Values end at 1e6 as
+    // colours do (kMaxAttribute): a scale of 1e30 made the derivatives
+    // program's products infinite on both pipelines (explore --seed 2026).
+    s.number("uniforms[].float", -kMaxAttribute, kMaxAttribute, nullptr, "a float's value").draws(-10, 10).edge({0, 1, -1})
         .only_if_present();
-    s.numbers("uniforms[].vec2", 2, 2, -kHuge, kHuge, nullptr, "a vec2's value").draws(-10, 10).edge({0, 1})
+    s.numbers("uniforms[].vec2", 2, 2, -kMaxAttribute, kMaxAttribute, nullptr, "a vec2's value").draws(-10, 10).edge({0, 1})
         .only_if_present();
-    s.numbers("uniforms[].vec3", 3, 3, -kHuge, kHuge, nullptr, "a vec3's value").draws(-10, 10).edge({0, 1})
+    s.numbers("uniforms[].vec3", 3, 3, -kMaxAttribute, kMaxAttribute, nullptr, "a vec3's value").draws(-10, 10).edge({0, 1})
         .only_if_present();
-    s.numbers("uniforms[].vec4", 4, 4, -kHuge, kHuge, nullptr, "a vec4's value").draws(-10, 10).edge({0, 1})
+    s.numbers("uniforms[].vec4", 4, 4, -kMaxAttribute, kMaxAttribute, nullptr, "a vec4's value").draws(-10, 10).edge({0, 1})
         .only_if_present();
     s.integer("uniforms[].int", -(1 << 24), 1 << 24, nullptr, "an int's value (exact as a float)")
         .draws(-100, 100).edge({0, 1, -1})
