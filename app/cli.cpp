@@ -16,8 +16,10 @@
 #include "app/error_line.h"
 #include "app/output_provenance.h"
 #include "app/memory_budget.h"
+#include "app/option_domain.h"
 #include "app/profile_quality.h"
 #include "scene/input_error.h"
+#include "scene/layer_file.h"
 
 namespace {
 
@@ -51,6 +53,90 @@ void add_common(CLI::App* cmd, st::CommonOptions& common, bool& gl_given) {
            "SHADERTWIN_GL, else auto")
         ->type_name("PLATFORM");
 }
+
+// The domains of the numeric options of slab, profile and optics-figures
+// (issue 26, point 4; app/option_domain.h; docs/optics.md lists them), each
+// declared once, here, with why. A value outside its domain is refused by
+// the parser, one line, exit 2; a value inside gives a finite answer or a
+// one-line refusal of a combination that cannot be computed (an --extent
+// too small for the stack, too many dipoles for --samples, a Monte Carlo
+// run estimated at hours), never undefined behaviour or NaN.
+struct SlabDomains {
+    // A layer's coefficients, index and thickness: the bounds a layers file
+    // has too (scene/layer_file.h): past them sigma_tr^2 overflows or a
+    // boundary becomes a mirror.
+    st::OptionDomain coefficient = st::reals_in(0.0, st::kCoefficientMax, "per mm");
+    st::OptionDomain eta = st::reals_in(st::kEtaMin, st::kEtaMax);
+    st::OptionDomain thickness{
+        "[" + st::domain_number(st::kThicknessMin) + ", " + st::domain_number(st::kThicknessMax) + "] mm, or inf",
+        [](const std::string& v) {
+            if (v == "inf") return true;
+            const auto x = st::option_real(v);
+            return x && *x >= st::kThicknessMin && *x <= st::kThicknessMax;
+        }};
+    // Henyey-Greenstein is a distribution for |g| < 1 only (at g = 1 light
+    // goes on unscattered). How close to 1 it may come depends on sigma_s:
+    // the check that sigma_t' = sigma_a + sigma_s (1 - g) is at least 1e-6
+    // per mm (cmd_slab.cpp) decides, with the others.
+    st::OptionDomain g{"(-1, 1)", [](const std::string& v) {
+                           const auto x = st::option_real(v);
+                           return x && *x > -1.0 && *x < 1.0;
+                       }};
+    // RMS slope of the Beckmann facets: 0 is smooth, 10 a surface of facets
+    // near vertical (a layers file's bound too).
+    st::OptionDomain roughness = st::reals_in(0.0, 10.0);
+    // Truncated sums: 10^4-10^5 pairs settle the slowest (absorption-free)
+    // slab; a million is far past that and still a second's work.
+    st::OptionDomain pairs = st::integers_in(0, 1000000);
+    // Relative changes below 1e-15 are the sums' own rounding (double's
+    // epsilon is 2.2e-16): a smaller tolerance only runs the pair search to
+    // its cap of 2^20 pairs (10 s for a 256-radius table, hours for a
+    // stack's kernels); a tolerance of 1 accepts anything.
+    st::OptionDomain tolerance{"[1e-15, 1)", [](const std::string& v) {
+                                   const auto x = st::option_real(v);
+                                   return x && *x >= 1e-15 && *x < 1.0;
+                               }};
+    // Monte Carlo photons per run (per channel for a stack): a million is
+    // the most the docs use (0.14 s for a 1 mm slab, 10 s for Table 3's skin
+    // in three channels on two cores); ten million keeps a run within about
+    // two minutes. Deep, nearly lossless media are bounded apart, by the
+    // estimated photon steps (cmd_slab.cpp).
+    st::OptionDomain photons = st::integers_in(1, 10000000);
+    // The seed picks the random streams (a uint64_t): any non-negative long long.
+    st::OptionDomain seed = st::integers_in(0, 9223372036854775807LL);
+    st::OptionDomain threads = st::integers_in(1, 256);
+    // FFT grid cells per side: a power of two (KissFFT's plans, the
+    // symmetric kernel); at least 8, so that the kernels' quarter holds two
+    // cells; at most 2048: 7.6 s and 250 MB for a three-layer stack here,
+    // where 4096 takes four times both (over 30 s, 1 GB).
+    st::OptionDomain grid{"a power of two in [8, 2048]", [](const std::string& v) {
+                              const auto x = st::option_integer(v);
+                              return x && *x >= 8 && *x <= 2048 && (*x & (*x - 1)) == 0;
+                          }};
+    // Grid width: 0 asks for the default. A stack's kernels reach a quarter
+    // of it, which must be at least its most translucent layer's reduced mean
+    // free path (optics/layered.cpp refuses less, naming the least): no layer
+    // has one shorter than 1 / 3e9 mm, so below 1e-9 mm nothing is taken.
+    // At most 1e10 mm, past the largest default (4 x 1024 mean free paths of
+    // at most 1e6 mm); at 1e25 the stack's R came out NaN.
+    st::OptionDomain extent{"0 (the default) or [1e-9, 1e10] mm", [](const std::string& v) {
+                                const auto x = st::option_real(v);
+                                return x && (*x == 0.0 || (*x >= 1e-9 && *x <= 1e10));
+                            }};
+    // The table's largest radius: lengths as a thickness's. A profile's
+    // radii square without overflow, and Monte Carlo's bins (r_max /
+    // samples, at least 1e-18 mm) are normal numbers whose annuli have an area.
+    st::OptionDomain r_max = st::reals_in(st::kThicknessMin, st::kThicknessMax, "mm");
+    // Radii of a table (Monte Carlo: bins): a million is 2.5 s for the
+    // multipole of 11 dipoles; more dipoles are bounded with the radii
+    // together (cmd_profile).
+    st::OptionDomain samples = st::integers_in(2, 1000000);
+    // optics-figures runs 18 Monte Carlo runs of --photons each, besides
+    // about 15 s of fixed work: at least 1000 so that every chart has
+    // points; at most a million, about two and a half minutes (the docs'
+    // figures use 400,000).
+    st::OptionDomain figure_photons = st::integers_in(1000, 1000000);
+};
 
 }  // namespace
 
@@ -136,35 +222,41 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     add_common(bench, common, gl_given);
 
     st::SlabOptions slab_options;
+    const SlabDomains domain;
     std::vector<CLI::Option*> eta_below_given;  // its default is --eta, so "unset" must not be a value
-    auto add_slab_options = [&slab_options, &eta_below_given](CLI::App* cmd) {
+    auto add_slab_options = [&slab_options, &eta_below_given, &domain](CLI::App* cmd) {
         cmd->add_option("--model", slab_options.model, "multipole, dipole or mc")
             ->check(CLI::IsMember({"multipole", "dipole", "mc"}));
-        cmd->add_option("--sigma-a", slab_options.sigma_a, "absorption coefficient, 1/mm");
-        cmd->add_option("--sigma-s", slab_options.sigma_s, "scattering coefficient, 1/mm");
-        cmd->add_option("--g", slab_options.g, "Henyey-Greenstein mean cosine");
-        cmd->add_option("--eta", slab_options.eta, "index of the slab relative to the medium above");
+        cmd->add_option("--sigma-a", slab_options.sigma_a, "absorption coefficient, 1/mm")->check(domain.coefficient.check());
+        cmd->add_option("--sigma-s", slab_options.sigma_s, "scattering coefficient, 1/mm")->check(domain.coefficient.check());
+        cmd->add_option("--g", slab_options.g, "Henyey-Greenstein mean cosine")->check(domain.g.check());
+        cmd->add_option("--eta", slab_options.eta, "index of the slab relative to the medium above")->check(domain.eta.check());
         eta_below_given.push_back(
-            cmd->add_option("--eta-below", slab_options.eta_below, "relative to the medium below (default: --eta)"));
-        cmd->add_option("--thickness", slab_options.thickness, "mm, or inf");
-        cmd->add_option("--roughness", slab_options.roughness, "RMS slope of a rough top surface (Beckmann)");
+            cmd->add_option("--eta-below", slab_options.eta_below, "relative to the medium below (default: --eta)")
+                ->check(domain.eta.check()));
+        cmd->add_option("--thickness", slab_options.thickness, "mm, or inf")->check(domain.thickness.check());
+        cmd->add_option("--roughness", slab_options.roughness, "RMS slope of a rough top surface (Beckmann)")
+            ->check(domain.roughness.check());
         cmd->add_option("--layers", slab_options.layers_file, "a JSON list of layers, top first (replaces the above)");
         cmd->add_flag("--no-km", slab_options.no_km, "layers: drop the frequency-space correction (first term only)");
         cmd->add_flag("--from-below", slab_options.from_below, "layers: light the stack from below (its last layer first)");
-        cmd->add_option("--grid", slab_options.grid, "layers: FFT grid size (power of two)");
-        cmd->add_option("--extent", slab_options.extent, "layers: grid width in mm (default: 64 mean free paths)");
+        cmd->add_option("--grid", slab_options.grid, "layers: FFT grid size (power of two)")->check(domain.grid.check());
+        cmd->add_option("--extent", slab_options.extent, "layers: grid width in mm (default: 64 mean free paths)")
+            ->check(domain.extent.check());
         cmd->add_option("--source", slab_options.source,
                         "diffusion source depth: first-scatter (defined for any thickness) or paper (1/sigma_t')")
             ->check(CLI::IsMember({"first-scatter", "paper"}));
         auto* pairs = cmd->add_option("--pairs", slab_options.pairs, "dipole pairs per side (multipole)")
-                          ->check(CLI::Range(0, 1000000));  // -1, "from the tolerance", is not a value to give
-        cmd->add_option("--tolerance", slab_options.tolerance, "relative tolerance that sets the pairs")->excludes(pairs);
+                          ->check(domain.pairs.check());  // -1, "from the tolerance", is not a value to give
+        cmd->add_option("--tolerance", slab_options.tolerance, "relative tolerance that sets the pairs")
+            ->check(domain.tolerance.check())
+            ->excludes(pairs);
     };
     auto* slab = app.add_subcommand("slab", "total diffuse R and T of a slab (dipole, multipole or Monte Carlo)");
     add_slab_options(slab);
-    slab->add_option("--photons", slab_options.photons, "Monte Carlo photons");
-    slab->add_option("--seed", slab_options.seed, "Monte Carlo seed");
-    slab->add_option("--threads", slab_options.threads, "Monte Carlo threads")->check(CLI::Range(1, 256));
+    slab->add_option("--photons", slab_options.photons, "Monte Carlo photons")->check(domain.photons.check());
+    slab->add_option("--seed", slab_options.seed, "Monte Carlo seed")->check(domain.seed.check());
+    slab->add_option("--threads", slab_options.threads, "Monte Carlo threads")->check(domain.threads.check());
     slab->add_flag("--json", slab_options.json, "one JSON object");
     std::string profile_out;
     double r_max = 10.0;
@@ -172,18 +264,18 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     auto* profile = app.add_subcommand("profile", "radial R(r) and T(r) tables of a slab (CSV, or EXR)");
     add_slab_options(profile);
     profile->add_option("--out", profile_out, "FILE.csv or FILE.exr")->required();
-    profile->add_option("--r-max", r_max, "largest radius, mm");
-    profile->add_option("--samples", samples, "number of radii (Monte Carlo: bins)");
-    profile->add_option("--photons", slab_options.photons, "Monte Carlo photons per channel");
-    profile->add_option("--seed", slab_options.seed, "Monte Carlo seed");
-    profile->add_option("--threads", slab_options.threads, "Monte Carlo threads")->check(CLI::Range(1, 256));
+    profile->add_option("--r-max", r_max, "largest radius, mm")->check(domain.r_max.check());
+    profile->add_option("--samples", samples, "number of radii (Monte Carlo: bins)")->check(domain.samples.check());
+    profile->add_option("--photons", slab_options.photons, "Monte Carlo photons per channel")->check(domain.photons.check());
+    profile->add_option("--seed", slab_options.seed, "Monte Carlo seed")->check(domain.seed.check());
+    profile->add_option("--threads", slab_options.threads, "Monte Carlo threads")->check(domain.threads.check());
 
     long long figure_photons = 200000;
     int figure_threads = 2;
     auto* figures = app.add_subcommand("optics-figures", "charts and tables of docs/optics.md (Figures 2-3, Table 3 skin, rough surfaces, speed/accuracy)");
     figures->add_option("--out", out_dir, "output folder");
-    figures->add_option("--photons", figure_photons, "Monte Carlo photons per run");
-    figures->add_option("--threads", figure_threads, "Monte Carlo threads")->check(CLI::Range(1, 256));
+    figures->add_option("--photons", figure_photons, "Monte Carlo photons per run")->check(domain.figure_photons.check());
+    figures->add_option("--threads", figure_threads, "Monte Carlo threads")->check(domain.threads.check());
 
     std::string technique;
     int sweep_frames = 5;

@@ -2,6 +2,7 @@
 // layer by the dipole or multipole model (optics/), and `profile`, its radial
 // R(r) and T(r) tables.
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -70,14 +71,10 @@ void check_unused_options(const SlabOptions& o) {
     if (o.model == "dipole") note_unused(o, {"--pairs", "--tolerance"}, "is for --model multipole (the dipole is one pair)");
 }
 
-void check_shared_options(const SlabOptions& o) {
-    check_unused_options(o);
-    if (!(o.tolerance > 0.0 && o.tolerance < 1.0)) throw InputError("--tolerance must lie in (0, 1)");
-    // About 1 us per photon per core on this machine for albedos near 0.9;
-    // 2e8 photons is several minutes, past that a run is a mistake.
-    if (o.photons < 1 || o.photons > 200000000) throw InputError("--photons must lie in [1, 200000000]");
-    if (o.seed < 0) throw InputError("--seed must be >= 0");
-}
+// Each option's own domain (--tolerance, --photons, --grid...) is the
+// parser's (app/cli.cpp, SlabDomains): the values here lie inside them, and
+// what is checked here are the combinations.
+void check_shared_options(const SlabOptions& o) { check_unused_options(o); }
 
 // The stack seen from below: the same layers in reverse order, each index
 // now relative to the layer that was below it (the air below becomes the
@@ -114,14 +111,51 @@ std::vector<optics::LayerSpec> read_layers(const SlabOptions& o) {
         if (layers[i].roughness > 0.0 && o.model == "mc")
             throw InputError(o.layers_file + ": layer " + std::to_string(i) +
                              ": --model mc has a rough top surface only, not rough inner interfaces");
-    if (o.grid < 8 || o.grid > 4096 || (o.grid & (o.grid - 1))) throw InputError("--grid must be a power of two in [8, 4096]");
-    if (!(o.extent >= 0.0) || !std::isfinite(o.extent)) throw InputError("--extent must be a number >= 0 (mm)");
     return layers;
 }
 
+// A photon's mean number of steps in the tracer, roughly (within a few
+// times: the Table 3 skin is estimated at 170, and takes about 40). In
+// reduced steps (a reduced step is m = 1/(1 - g) steps, after which the
+// direction is forgotten; g near 1 is nearly ballistic) a walk ends by
+// leaving or by roulette (after about 9.2 / (1 - albedo) steps). To leave,
+// it must meet a boundary 1/p times, p = 1 - F_dr the least chance that
+// diffuse light crosses a boundary outward (--eta 100: 5e-6), and it meets
+// one about sqrt(t) times in its first t steps, so leaving near where it
+// came in takes about T_esc = 1/p^2; in a slab of reduced optical depth tau
+// it is spread through it after tau^2 steps and leaves by either side at
+// 2p/tau a step: T_slab = tau^2 + tau/(2p), infinite for a half-space. The
+// time to leave has a t^(-1/2) tail from T_esc to the cut T_cut (roulette or
+// T_slab, the smaller): the mean is sqrt(T_esc T_cut), or T_cut when that
+// is the smaller. (It was sqrt(min(tau^2, roulette)) alone: --eta 100
+// --sigma-a 0.01 --sigma-s 1e9 --thickness 1e6 was put at 1e6 steps a
+// photon and one photon ran for minutes; --g 0.9999999999 --sigma-a 2e-6
+// --sigma-s 352 --thickness 1e9 at 4e4 where it took 1e9.)
+double mean_steps(const optics::McSetup& s) {
+    double tau = 0.0, albedo = 0.0, m = 1.0, p = 1.0;
+    double n_above = s.n_above;
+    for (const optics::McLayer& l : s.layers) {
+        tau += (l.sigma_a + l.sigma_s * (1.0 - l.g)) * l.thickness;  // infinite for a half-space
+        albedo = std::max(albedo, l.sigma_s / (l.sigma_a + l.sigma_s));
+        m = std::max(m, 1.0 / (1.0 - l.g));
+        // Both ways across each interface: light is trapped in the denser side.
+        p = std::min({p, 1.0 - optics::diffuse_fresnel_reflectance(l.n / n_above),
+                      1.0 - optics::diffuse_fresnel_reflectance(n_above / l.n)});
+        n_above = l.n;
+    }
+    p = std::min({p, 1.0 - optics::diffuse_fresnel_reflectance(n_above / s.n_below),
+                  1.0 - optics::diffuse_fresnel_reflectance(s.n_below / n_above)});
+    p = std::max(p, 1e-12);
+    const double roulette = (albedo < 1.0 ? 9.2 / (1.0 - albedo) : INFINITY) / m;
+    const double slab = std::isinf(tau) ? INFINITY : tau * tau + tau / (2.0 * p);
+    const double cut = std::min(roulette, slab), escape = 1.0 / (p * p);
+    return (escape >= cut ? cut : std::sqrt(escape * cut)) * m;
+}
+
 // One channel of a layer stack as the Monte Carlo tracer's setup: absolute
-// indices from the relative etas, air above and below.
-optics::McSetup mc_setup(const std::vector<optics::LayerSpec>& layers, int channel, const SlabOptions& o) {
+// indices from the relative etas, air above and (for a stack) below.
+optics::McSetup mc_setup(const std::vector<optics::LayerSpec>& layers, int channel, const SlabOptions& o,
+                         double n_below = 1.0) {
     optics::McSetup setup;
     double n = 1.0;
     for (const optics::LayerSpec& l : layers) {
@@ -134,30 +168,22 @@ optics::McSetup mc_setup(const std::vector<optics::LayerSpec>& layers, int chann
         m.thickness = l.thickness;
         setup.layers.push_back(m);
     }
+    setup.n_above = 1.0;
+    setup.n_below = n_below;
     // A photon in an absorption-free half-space ends only by coming back
     // out, and its time to do so has no finite mean: the run need not end.
     if (std::isinf(setup.layers.back().thickness) && setup.layers.back().sigma_a == 0.0)
         throw InputError("--model mc: an absorption-free semi-infinite layer keeps photons for ever; give it sigma_a > 0 "
                          "or a finite thickness");
-    // Nearly so is nearly as bad. A photon's walk ends by leaving (within
-    // about tau^2 steps in a slab of optical depth tau; half of the walks
-    // within the first few) or by roulette (after about 9.2 / (1 - albedo)
-    // steps): the mean is about the square root of the smaller, as the time
-    // to leave a half-space has a t^(-1/2) tail. About 80 ns per step here.
-    double tau = 0.0, albedo = 0.0;
-    for (const optics::McLayer& m : setup.layers) {
-        tau += (m.sigma_a + m.sigma_s) * m.thickness;  // infinite for a half-space
-        albedo = std::max(albedo, m.sigma_s / (m.sigma_a + m.sigma_s));
-    }
-    const double by_roulette = albedo < 1.0 ? 9.2 / (1.0 - albedo) : INFINITY;
-    const double steps = std::sqrt(std::min(tau * tau, by_roulette)) * double(o.photons);
+    // Nearly so is nearly as bad (mean_steps). About 80 ns per step here.
+    const double steps = mean_steps(setup) * double(o.photons);
     if (steps > 1e10) {
         std::ostringstream why;
         why << std::setprecision(2) << "--model mc: about " << steps * 80e-9 / 60.0 / 2.0
-            << " minutes on two cores (nearly absorption-free and optically deep); use fewer --photons";
+            << " minutes on two cores (nearly absorption-free and optically deep, or behind boundaries that reflect "
+               "nearly all light back in); use fewer --photons";
         throw InputError(why.str());
     }
-    setup.n_above = setup.n_below = 1.0;
     setup.top_roughness = layers.front().roughness;
     setup.photons = uint64_t(o.photons);
     setup.seed = uint64_t(o.seed);
@@ -178,41 +204,20 @@ optics::LayeredOptions layered_options(const SlabOptions& o) {
     return lo;
 }
 
+// The single layer of the options (each inside its domain: app/cli.cpp).
 optics::Slab validated(const SlabOptions& o) {
-    if (o.sigma_a == -1 && o.sigma_s == -1 && o.thickness.empty())
-        throw InputError("give --sigma-a, --sigma-s and --thickness, or --layers FILE");
-    auto coefficient = [](double v, const char* name) {
-        if (!(v >= 0.0 && v <= kCoefficientMax))
-            throw InputError(std::string(name) + " must be a number in [0, 1e9] (per mm)");
-    };
-    coefficient(o.sigma_a, "--sigma-a");
-    coefficient(o.sigma_s, "--sigma-s");
-    if (!(o.g > -1.0 && o.g < 1.0)) throw InputError("--g must lie in (-1, 1)");
-    auto index = [](double v, const char* name) {
-        if (!(v > 0.0)) throw InputError(std::string(name) + " must be a number > 0");
-        if (!(v >= kEtaMin && v <= kEtaMax)) throw InputError(std::string(name) + " must lie in [0.01, 100]");
-    };
-    index(o.eta, "--eta");
-    index(o.eta_below, "--eta-below");
+    for (const char* name : {"--sigma-a", "--sigma-s", "--thickness"})
+        if (!o.given.count(name))
+            throw InputError(std::string("no ") + name + ": give --sigma-a, --sigma-s and --thickness, or --layers FILE");
     optics::Slab s;
     s.sigma_a = o.sigma_a;
     s.sigma_s = o.sigma_s;
     s.g = o.g;
     s.eta = o.eta;
     s.eta_below = o.eta_below;
-    if (o.thickness == "inf") {
-        s.thickness = INFINITY;
-    } else {
-        double d = 0;
-        std::istringstream in(o.thickness);
-        if (!(in >> d) || !in.eof() || !std::isfinite(d) || d <= 0.0)
-            throw InputError("--thickness must be a number > 0 (mm) or 'inf'");
-        if (!(d >= kThicknessMin && d <= kThicknessMax)) throw InputError("--thickness must lie in [1e-12, 1e9] mm or be 'inf'");
-        s.thickness = d;
-    }
+    s.thickness = o.thickness == "inf" ? INFINITY : std::strtod(o.thickness.c_str(), nullptr);
     if (!(s.sigma_t_reduced() >= kSigmaTReducedMin))
         throw InputError("sigma_a + sigma_s (1 - g) must be at least 1e-6 per mm (the medium barely interacts)");
-    if (!(o.roughness >= 0.0 && o.roughness <= 10.0)) throw InputError("--roughness must lie in [0, 10]");
     if (o.roughness > 0.0 && o.model != "mc") s.boundary_factor_top = optics::rough_boundary_factor(o.roughness, s.eta);
     check_shared_options(o);
     return s;
@@ -242,8 +247,8 @@ optics::LayerSpec grey_layer(const optics::Slab& s, double roughness) {
 }
 
 int slab_monte_carlo(const optics::Slab& s, const SlabOptions& o) {
-    optics::McSetup setup = mc_setup({grey_layer(s, o.roughness)}, 0, o);
-    setup.n_below = s.eta / s.eta_below;  // one layer may have another medium below
+    // One layer may have another medium below.
+    optics::McSetup setup = mc_setup({grey_layer(s, o.roughness)}, 0, o, s.eta / s.eta_below);
     const optics::McResult r = optics::trace_photons(setup);
     nlohmann::json j = {{"model", "mc"},          {"R", r.R},           {"T", r.T},
                         {"T_direct", r.T_direct}, {"R_stderr", r.R_stderr}, {"T_stderr", r.T_stderr},
@@ -367,8 +372,6 @@ int cmd_profile(const SlabOptions& o, const std::string& out, double r_max, int 
     check_profile_path(out);
     ProfileTable table;
     if (o.model == "mc") {
-        if (!(r_max > 0.0) || !std::isfinite(r_max)) throw InputError("--r-max must be a number > 0 (mm)");
-        if (samples < 2 || samples > 1000000) throw InputError("--samples must lie in [2, 1000000]");
         std::vector<optics::LayerSpec> layers;
         double n_below = 1.0;  // a single slab may have another medium below
         if (!o.layers_file.empty()) {
@@ -380,8 +383,7 @@ int cmd_profile(const SlabOptions& o, const std::string& out, double r_max, int 
         }
         const int channels = o.layers_file.empty() ? 1 : 3;
         for (int c = 0; c < channels; ++c) {
-            optics::McSetup setup = mc_setup(layers, c, o);
-            setup.n_below = n_below;
+            optics::McSetup setup = mc_setup(layers, c, o, n_below);
             setup.bin_width = r_max / samples;
             setup.bins = samples;
             const optics::McResult r = optics::trace_photons(setup);
@@ -413,9 +415,19 @@ int cmd_profile(const SlabOptions& o, const std::string& out, double r_max, int 
         return 0;
     }
     const optics::Slab s = validated(o);
-    if (!(r_max > 0.0) || !std::isfinite(r_max)) throw InputError("--r-max must be a number > 0 (mm)");
-    if (samples < 2 || samples > 1000000) throw InputError("--samples must lie in [2, 1000000]");
     const optics::Multipole m = build(s, o);
+    // Each radius sums every dipole: about 16 ns a dipole and radius here,
+    // so a table of 5e8 of them takes 8 s. --pairs 1000000 (2,000,001
+    // dipoles) at the default 256 radii is past that, and so is a converged
+    // series of 2^20 pairs at --samples 1000000: hours.
+    constexpr double kMaxDipoleRadii = 5e8;
+    if (double(m.dipoles()) * samples > kMaxDipoleRadii) {
+        std::ostringstream why;
+        why << std::setprecision(2) << m.dipoles() << " dipoles at each of " << samples << " radii is about "
+            << double(m.dipoles()) * samples * 16e-9 / 60.0 << " minutes, past the bound of 5e8 dipole-radius sums: give fewer --samples"
+            << (o.pairs >= 0 ? " or --pairs" : " or a larger --tolerance");
+        throw InputError(why.str());
+    }
     table.R.resize(1);
     table.T.resize(1);
     for (int i = 0; i < samples; ++i) {

@@ -34,6 +34,15 @@ FftGrid::~FftGrid() {
     kiss_fft_free(col_inverse_);
 }
 
+namespace {
+constexpr int kFine = 64;  // entries of the radial table per cell
+}  // namespace
+
+size_t FftGrid::kernel_samples() const {
+    const double r_max = n_ * cell_ / 4.0, step = cell_ / kFine;
+    return size_t(std::ceil((r_max + cell_) / step)) + 2;
+}
+
 // The profile is evaluated once on a radial table 64 times finer than the
 // cell and interpolated linearly: O(N^2) lookups rather than O(N^2)
 // multipole sums. Each cell holds the profile's mean over the cell, not its
@@ -45,9 +54,8 @@ Spectrum FftGrid::kernel(double total, const std::function<double(double)>& prof
     const int n = n_;
     std::vector<float> k(size_t(n) * n, 0.0f);
     const double r_max = n * cell_ / 4.0;
-    constexpr int kFine = 64;
     const double step = cell_ / kFine;
-    std::vector<double> table(size_t(std::ceil((r_max + cell_) / step)) + 2);
+    std::vector<double> table(kernel_samples());
     for (size_t i = 0; i < table.size(); ++i) table[i] = profile(double(i) * step);
     auto at = [&](double r) {
         const double f = r / step;

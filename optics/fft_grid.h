@@ -35,6 +35,9 @@ public:
     // `cut` is given, it is raised to the profile's integral beyond the
     // quarter grid (light per unit of light in).
     Spectrum kernel(double total, const std::function<double(double)>& profile, double* cut = nullptr) const;
+    // How many radii kernel() evaluates the profile at (its radial table,
+    // 64 a cell out to a quarter of the grid), besides a few for `cut`.
+    size_t kernel_samples() const;
 
     // Back to space, per mm^2 at radii b * cell, b < n / 2: the cells
     // averaged over one-cell-wide annuli, interpolated to radius b between

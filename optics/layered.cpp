@@ -30,9 +30,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "optics/diffuse_fresnel.h"
 #include "optics/fft_grid.h"
@@ -68,7 +70,16 @@ struct Responses {
     double ec = 0.0;
 };
 
-Responses layer_responses(const FftGrid& grid, const Slab& s, double tolerance, int& dipoles, double& cut) {
+// Each kernel sums its multipole's dipoles at every entry of the grid's
+// radial table: about 8 ns a dipole and radius here, so 1e9 of them are
+// 8 s, for one layer in one channel. Within that: Table 2's and 3's stacks
+// at grid 2048 (1e7). Past it: a layer whose image series needs 10^5 pairs
+// and more (a tolerance near 1e-15, or an optically very thin layer) on a
+// fine grid, minutes to hours.
+constexpr double kMaxDipoleRadii = 1e9;
+
+Responses layer_responses(const FftGrid& grid, const Slab& s, double tolerance, int& dipoles, double& cut,
+                          const std::string& which) {
     Slab flipped = s;  // seen from below: the two boundaries swap
     std::swap(flipped.eta, flipped.eta_below);
     std::swap(flipped.boundary_factor_top, flipped.boundary_factor_bottom);
@@ -76,6 +87,17 @@ Responses layer_responses(const FftGrid& grid, const Slab& s, double tolerance, 
     const Multipole from_above = Multipole::converged(s, tolerance, SourceDepth::DiffuseFirstScatter);
     const Multipole from_below = Multipole::converged(flipped, tolerance, SourceDepth::DiffuseFirstScatter);
     dipoles = std::max({dipoles, beam.dipoles(), from_above.dipoles(), from_below.dipoles()});
+    const double kernels = s.semi_infinite() ? 1.0 : 2.0;  // R, and T of a finite layer
+    const double sums = double(beam.dipoles() + from_above.dipoles() + from_below.dipoles()) * kernels *
+                        double(grid.kernel_samples());
+    if (sums > kMaxDipoleRadii) {
+        std::ostringstream m;
+        m << std::setprecision(2) << which << ": its image series has "
+          << std::max({beam.dipoles(), from_above.dipoles(), from_below.dipoles()}) << " dipoles, "
+          << grid.kernel_samples() << " radii each on a grid of " << grid.size() << ": about " << sums * 8e-9 / 60.0
+          << " minutes, past the bound of 1e9 dipole-radius sums; give a larger tolerance or a smaller grid";
+        throw std::invalid_argument(m.str());
+    }
     auto reflected = [&](const Multipole& m) {
         return grid.kernel(m.total_reflectance(), [&](double r) { return m.reflectance(r); }, &cut);
     };
@@ -220,7 +242,8 @@ LayeredResult combine_layers(const std::vector<LayerSpec>& layers, const Layered
         double unscattered = 1.0;  // the beam through every layer, e^(-sigma_t d) each: sigma_t, not sigma_t'
         for (size_t i = 0; i < layers.size(); ++i) {
             const Slab& s = slabs[i][size_t(c)];
-            const Responses l = layer_responses(grid, s, o.tolerance, result.dipoles[i], ch.profile_cut);
+            const Responses l = layer_responses(grid, s, o.tolerance, result.dipoles[i], ch.profile_cut,
+                                                "layer " + std::to_string(i) + ", channel " + std::to_string(c));
             const double passes = s.semi_infinite() ? 0.0 : std::exp(-s.sigma_t() * s.thickness);
             unscattered *= passes * (1.0 - fresnel_normal(s.eta_below));
             direct *= passes * (1.0 - fresnel_normal(s.eta_below));

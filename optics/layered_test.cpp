@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -210,4 +212,28 @@ TEST(FftGrid, RefusesCellsItCannotIndex) {
 }
 
 }  // namespace
+}  // namespace st::optics
+
+namespace st::optics {
+
+// A layer whose image series needs about 10^5 pairs at a tolerance of 1e-15
+// (found by fuzzing the option domains), on a 256 grid: each kernel would
+// sum them at 4,162 radii, 2.5e9 sums for the layer, minutes; refused with
+// what to change. At the default tolerance it has few pairs and answers.
+TEST(Layered, RefusesKernelsTooCostlyToTabulate) {
+    LayerSpec l = layer(0.0, 89577455.57185568, 3036.310930242832, 2.0);
+    LayeredOptions o;
+    o.tolerance = 1e-15;
+    try {
+        combine_layers({l}, o);
+        FAIL() << "not refused";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("dipoles"), std::string::npos) << e.what();
+    }
+    o.tolerance = 1e-6;
+    const LayeredResult r = combine_layers({l}, o);
+    EXPECT_TRUE(std::isfinite(r.channel[0].R));
+    EXPECT_LT(r.dipoles[0], 1000);
+}
+
 }  // namespace st::optics

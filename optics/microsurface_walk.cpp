@@ -81,7 +81,15 @@ Vec visible_normal(const Vec& wi, double m, PhotonRng& rng) {
     if (sin_t < 1e-12) {
         sx = sigma * standard_normal(rng);  // straight on: every facet is seen in proportion to its area
     } else {
-        sx = sigma * visible_slope(wi.z / sin_t / sigma, rng);
+        // tau = cot(theta) / sigma overflows for a surface so smooth that
+        // sigma is below about 1e-296 (--roughness 1e-310, a denormal): the
+        // slope sampled from tau = inf was NaN, and the photon walked on with
+        // a NaN direction until roulette took it (R = 0 where the smooth
+        // surface gives 0.29, and a thousand times slower). In that limit
+        // (tau - x) phi(x) is phi(x): facets are seen in proportion to their
+        // area, as straight on.
+        const double tau = wi.z / sin_t / sigma;
+        sx = sigma * (std::isfinite(tau) ? visible_slope(tau, rng) : standard_normal(rng));
     }
     // Slopes in the frame where wi lies in the x-z plane, then rotated back.
     const double c = sin_t < 1e-12 ? 1.0 : wi.x / sin_t, s = sin_t < 1e-12 ? 0.0 : wi.y / sin_t;

@@ -104,3 +104,22 @@ TEST(MicrosurfaceWalk, InternalReflectionIsTheReciprocalRhoD) {
 }
 
 }  // namespace st::optics
+
+namespace st::optics {
+
+// A roughness so small that cot(theta) / sigma overflows (1e-310, a
+// denormal, reaches the walk from `--roughness` or a layers file): the
+// sampled slope was NaN, every photon walked on with a NaN direction (Monte
+// Carlo's R came out 0). The surface is smooth: Fresnel's 4 % onto glass,
+// and total internal reflection from inside as for m = 1e-6.
+TEST(MicrosurfaceWalk, DenormalRoughnessIsSmooth) {
+    for (double m : {1e-300, 1e-310, 1e-320}) {
+        const Split s = shoot(m, 1.0, 1.5, false, 100000);
+        EXPECT_NEAR(s.reflected, 0.04, 4.0 * std::sqrt(0.04 * 0.96 / 100000)) << m;
+        EXPECT_EQ(s.lost, 0.0) << m;
+        const Split in = shoot(m, 1.5, 1.0, true, 100000), smooth = shoot(1e-6, 1.5, 1.0, true, 100000, 2);
+        EXPECT_NEAR(in.reflected, smooth.reflected, 4.0 * std::sqrt(2.0 * 0.25 / 100000)) << m;
+    }
+}
+
+}  // namespace st::optics

@@ -13,6 +13,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <system_error>
 #include <thread>
 
 #include "optics/photon_rng.h"
@@ -200,6 +201,16 @@ private:
         return o == InterfaceOutcome::Transmitted;
     }
 
+    // The radial bin of an exit point at (x, y), or one past the last bin
+    // when it lies beyond them. The quotient is compared before it is
+    // converted: radius / bin_width can exceed any int (profile --model mc
+    // --r-max 1e-9, bins of 4e-12 mm: a photon 0.01 mm out made int() of
+    // 2.6e9, undefined, and the tally was written far outside its table).
+    size_t bin_of(double x, double y) const {
+        const double b = std::sqrt(x * x + y * y) / s_.bin_width;
+        return b < double(s_.bins) ? size_t(b) : size_t(s_.bins);
+    }
+
     void cross(PhotonRng& rng, Tally& t, double x, double y, double& ux, double& uy, double& uz, double w,
                size_t& layer, bool scattered, bool& alive, double& w_out) const {
         const bool up = uz < 0.0;
@@ -209,10 +220,9 @@ private:
         if (up && leaves && s_.top_roughness > 0.0) {
             double wr = w;
             if (rough_top(n1, n2, ux, uy, uz, wr, rng)) {
-                const double radius = std::sqrt(x * x + y * y);
-                const int bin = int(radius / s_.bin_width);
+                const size_t bin = bin_of(x, y);
                 t.R += wr;
-                if (bin < s_.bins) t.R_bins[size_t(bin)] += wr;
+                if (bin < t.R_bins.size()) t.R_bins[bin] += wr;
                 alive = false;
             } else if (wr == 0.0) {
                 alive = false;  // lost in the facet model
@@ -228,16 +238,15 @@ private:
             return;
         }
         if (leaves) {
-            const double radius = std::sqrt(x * x + y * y);
-            const int bin = int(radius / s_.bin_width);
+            const size_t bin = bin_of(x, y);
             if (up) {
                 t.R += w;
-                if (bin < s_.bins) t.R_bins[size_t(bin)] += w;
+                if (bin < t.R_bins.size()) t.R_bins[bin] += w;
             } else if (!scattered) {
                 t.T_direct += w;
             } else {
                 t.T += w;
-                if (bin < s_.bins) t.T_bins[size_t(bin)] += w;
+                if (bin < t.T_bins.size()) t.T_bins[bin] += w;
             }
             alive = false;
             return;
@@ -276,13 +285,21 @@ private:
 
 McResult trace_photons(const McSetup& setup) {
     const Tracer tracer(setup);
-    // Chunks depend on the photon count only: at least 4096 photons, at
-    // most 1024 chunks plus one. Each chunk has its own random stream and
-    // tally; tallies are added into the sums strictly in chunk order, so the
-    // result does not depend on the thread count, and a finished chunk is
-    // kept only until the chunks before it are in (memory: a few tallies, not
-    // one per chunk, whatever the number of bins).
-    const uint64_t chunk = std::max<uint64_t>(4096, setup.photons / 1024);
+    // Chunks depend on the photon count and the bins only: at least 4096
+    // photons, at most 1024 chunks plus one. Each chunk has its own random
+    // stream and tally; tallies are added into the sums strictly in chunk
+    // order, so the result does not depend on the thread count, and a
+    // finished chunk is kept only until the chunks before it are in
+    // (memory: a few tallies, not one per chunk, whatever the number of
+    // bins). A chunk also holds at least as many photons as there are bins:
+    // each tally is two tables of `bins`, zeroed and added once, so with a
+    // fine table (profile --samples 1000000) 4096-photon chunks cost far more
+    // in tallies than in photons (17 s for 2e6 photons on two threads, and
+    // 7.6 GB at --threads 256); so the tallies cost no more than the photons
+    // do, and the tallies alive at once stay within 2 chunks' worth each,
+    // about 32 bytes a photon. (Every caller but `profile --samples` above
+    // 4096 has fewer bins than 4096: their chunks are as they were.)
+    const uint64_t chunk = std::max({uint64_t(4096), setup.photons / 1024, uint64_t(std::max(0, setup.bins))});
     const uint64_t chunks = (setup.photons + chunk - 1) / chunk;
     Tally sum;
     sum.R_bins.assign(size_t(setup.bins), 0.0);
@@ -357,8 +374,19 @@ McResult trace_photons(const McSetup& setup) {
     auto work = [&] {
         for (uint64_t c; (c = next.fetch_add(1)) < chunks;) guarded(c);
     };
+    // No more threads than chunks (the others would find no work). A thread
+    // the system will not start (std::system_error: --threads 256 under a
+    // ulimit) leaves the work to those that did start, with the same result;
+    // it used to end the process in std::terminate with threads unjoined.
     std::vector<std::thread> threads;
-    for (int i = 1; i < std::max(1, setup.threads); ++i) threads.emplace_back(work);
+    const uint64_t workers = std::min<uint64_t>(uint64_t(std::max(1, setup.threads)), chunks);
+    for (uint64_t i = 1; i < workers; ++i) {
+        try {
+            threads.emplace_back(work);
+        } catch (const std::system_error&) {
+            break;
+        }
+    }
     // The calling thread works too, and reports progress between its chunks.
     auto last = std::chrono::steady_clock::now();
     for (uint64_t c; (c = next.fetch_add(1)) < chunks;) {

@@ -229,3 +229,27 @@ TEST(Multipole, AnyIndexGivesAReflectance) {
 }
 
 }  // namespace st::optics
+
+namespace st::optics {
+
+// An optically very thin slab: the first-scatter source sits half way
+// down. At d / l = 1e-17 the closed form l (1 - x / expm1(x)) rounded to 0,
+// the source sat on the surface, and the series of --sigma-s 1e-5
+// --thickness 1e-12 took 126,380 pairs a side to settle (issue 26's option
+// domains); its series for small x keeps the depth and a few pairs do.
+TEST(Multipole, OpticallyThinSourceSitsHalfWayDown) {
+    for (double d : {1e-12, 1e-9, 1e-6}) {
+        Slab s{.sigma_a = 0.0, .sigma_s = 1e-5, .thickness = d};
+        const Multipole m = Multipole::converged(s, 1e-6);
+        EXPECT_LT(m.pairs_per_side(), 50) << d;
+        EXPECT_NEAR(m.sources()[size_t(m.pairs_per_side())].z_real, d / 2.0, d * 1e-6) << d;
+        EXPECT_TRUE(std::isfinite(m.reflectance(0.0)) && std::isfinite(m.total_transmittance())) << d;
+    }
+    // Where the series takes over (x = 1e-4), it meets the closed form.
+    Slab a{.sigma_a = 0.0, .sigma_s = 1.0, .thickness = 0.99999e-4}, b = a;
+    b.thickness = 1.00001e-4;
+    const double za = Multipole(a, 0).sources()[0].z_real, zb = Multipole(b, 0).sources()[0].z_real;
+    EXPECT_NEAR(za / a.thickness, zb / b.thickness, 1e-9);
+}
+
+}  // namespace st::optics

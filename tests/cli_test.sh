@@ -1139,7 +1139,13 @@ PY
     # A grid too small to hold the profiles (issue 26's held-out fuzzing: 1e-320
     # read out of bounds, 1e-30 answered R = 2e-5 for skin), refused; just
     # above the bound it answers, and says how much of the profile it cut.
-    for e in 1e-320 1e-30 4; do
+    # Below 1e-9 mm no stack takes it: outside --extent's domain.
+    for e in 1e-320 1e-30; do
+      expect_slab_error "layers on a grid of $e mm" --layers "$(dirname "$0")/../materials/skin-table3.json" --extent "$e"
+      grep -q -- "--extent: '$e' is outside its domain, 0 (the default) or \[1e-9, 1e10\] mm" "$work/stderr" ||
+        fail "extent $e: $(cat "$work/stderr")"
+    done
+    for e in 1e-9 4; do
       expect_slab_error "layers on a grid of $e mm" --layers "$(dirname "$0")/../materials/skin-table3.json" --extent "$e"
       grep -q "extent .* too small.*give at least 4.06" "$work/stderr" || fail "extent $e: $(cat "$work/stderr")"
     done
@@ -1189,6 +1195,93 @@ PY
     [ "$rc" -eq 2 ] && [ ! -e "$work/p.png" ] && [ "$(wc -l <"$work/err")" -eq 1 ] || fail "profile to a .png: exit $rc"
     set +e; "$bin" profile --sigma-a 0.01 --sigma-s 1 --thickness 2 --out "$work/nodir/p.csv" 2>/dev/null; rc=$?; set -e
     [ "$rc" -eq 2 ] || fail "profile to a missing folder: exit $rc"
+    ;;
+
+  option_domains)
+    # Every numeric option of slab (one layer, Monte Carlo, --layers),
+    # profile and optics-figures at the edges of its values (issue 26, point
+    # 4): each run answers (exit 0, only finite numbers out) or refuses (exit
+    # 2, one line, no table written), within 30 s; a value outside every
+    # option's domain (app/cli.cpp, SlabDomains; docs/optics.md) is refused
+    # by the parser with a line naming the option and its domain. Defects it
+    # found: profile --model mc --r-max 1e-9 crashed (a bin index past int),
+    # --model mc --roughness 1e-310 answered R = 0 a thousand times slower,
+    # --extent 1e25 and --r-max 1e308 made NaN, --pairs 1000000 or a
+    # --tolerance of 1e-300 in profile ran for hours.
+    start=$SECONDS
+    edges=(0 -0 -1 1e-320 1e-30 1e30 1e308 inf -inf nan 2147483648 9223372036854775808 1.5 '')
+    outside=(-1 1e308 -inf nan 9223372036854775808 '')  # in no domain of these options
+    printf '[{"sigma_a":[0.1,0.2,0.3],"sigma_s":[1,2,3],"g":0.5,"eta":1.4,"thickness":1}]' >"$work/layer.json"
+    runs=0 answered=0
+    declare -A by_parser  # "COMMAND OPTION VALUE" the parser refused: so it does with any other options
+    # edge_runs COMMAND TABLE BASE OPTION [VALUE...]: COMMAND with the BASE
+    # options (NAME VALUE pairs, one string) and OPTION at every edge value
+    # and the VALUEs; TABLE is profile's --out ("" for none).
+    edge_runs() {
+      local command="$1" table="$2" base="$3" opt="$4" value o i
+      shift 4
+      local b=($base)
+      for value in "${edges[@]}" "$@"; do
+        [ -z "${by_parser["$command $opt $value"]:-}" ] || continue
+        local args=()
+        for ((i = 0; i < ${#b[@]}; i += 2)); do [ "${b[i]}" = "$opt" ] || args+=("${b[i]}" "${b[i + 1]}"); done
+        args+=("$opt" "$value")
+        [ -z "$table" ] || args+=(--out "$table")
+        expect_answer_or_refusal "$command $base $opt '$value'" "$table" "$bin" "$command" "${args[@]}"
+        runs=$((runs + 1))
+        [ "$rc" -ne 0 ] || answered=$((answered + 1))
+        local parser=0
+        [[ "$refusal" != "shadertwin: $opt: "*domain* ]] || { parser=1; by_parser["$command $opt $value"]=1; }
+        for o in "${outside[@]}"; do
+          [ "$value" != "$o" ] || [ "$parser" -eq 1 ] ||
+            fail "$command $opt '$value' is outside its domain, yet: exit $rc, $(cat "$work/stderr")"
+        done
+      done
+    }
+    single="--sigma-a 0.1 --sigma-s 1 --thickness 1"
+    table="$work/table.csv"
+    for command in "slab $single" "slab --model mc --photons 100 $single" "profile --samples 16 $single"; do
+      c=${command%% *} base=${command#* }
+      t=""; [ "$c" = profile ] && t="$table"
+      edge_runs "$c" "$t" "$base" --sigma-a 1e9 1.1e9 1e-310
+      edge_runs "$c" "$t" "$base" --sigma-s 1e9 1.1e9 1e-310
+      edge_runs "$c" "$t" "$base" --g 1 -1 0.999999 -0.999999
+      edge_runs "$c" "$t" "$base" --eta 0.01 100 0.0099 100.1
+      edge_runs "$c" "$t" "$base" --eta-below 0.01 100 0.0099 100.1
+      edge_runs "$c" "$t" "$base" --thickness 1e-12 1e9 9e-13 1.1e9 INF
+      edge_runs "$c" "$t" "$base" --roughness 10 10.1 1e-310 0.05
+    done
+    # profile at 256 radii: --pairs 1000000 there is refused, 2e6 dipoles at each.
+    for command in "slab $single" "profile $single"; do
+      c=${command%% *} base=${command#* }
+      t=""; [ "$c" = profile ] && t="$table"
+      edge_runs "$c" "$t" "$base" --pairs 1000000 1000001
+      edge_runs "$c" "$t" "$base" --tolerance 1e-15 9e-16 0.999999 1
+    done
+    for command in "slab --layers $work/layer.json --grid 32" "profile --layers $work/layer.json --grid 32"; do
+      c=${command%% *} base=${command#* }
+      t=""; [ "$c" = profile ] && t="$table"
+      edge_runs "$c" "$t" "$base" --grid 8 4096 3
+      edge_runs "$c" "$t" "$base" --extent 1e-9 9e-10 1e10 1.1e10 4.1
+      edge_runs "$c" "$t" "$base" --tolerance 1e-15 9e-16 0.999999 1
+    done
+    for command in "slab --model mc --photons 100 $single" "profile --model mc --layers $work/layer.json --photons 100"; do
+      c=${command%% *} base=${command#* }
+      t=""; [ "$c" = profile ] && t="$table"
+      edge_runs "$c" "$t" "$base" --photons 1 10000001
+      edge_runs "$c" "$t" "$base" --seed 9223372036854775807
+      edge_runs "$c" "$t" "$base" --threads 1 256 257
+    done
+    edge_runs profile "$table" "--samples 16 $single" --r-max 1e-12 9e-13 1e9 1.1e9
+    edge_runs profile "$table" "--model mc --photons 100 $single" --r-max 1e-12 9e-13 1e9 1.1e9
+    edge_runs profile "$table" "$single" --samples 2 1000001
+    edge_runs profile "$table" "--model mc --photons 100 $single" --samples 2 1000000 1000001
+    # optics-figures: every edge value is outside both domains (a run inside
+    # takes 15 s and more: cli.optics_figures runs one).
+    edge_runs optics-figures "" "--out $work/figures" --photons 999 1000001
+    edge_runs optics-figures "" "--out $work/figures" --threads 257
+    [ ! -e "$work/figures" ] || fail "optics-figures: a refused run left $work/figures"
+    echo "ok   $runs runs: $answered answered, $((runs - answered)) refused with one line, in $((SECONDS - start)) s"
     ;;
 
   optics_figures)

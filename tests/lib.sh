@@ -52,3 +52,37 @@ sdk_setup() {
   prefix="$work/prefix"
   cmake --install "$build" --prefix "$prefix" >"$work/install.log" || { cat "$work/install.log"; fail "install"; }
 }
+
+# expect_answer_or_refusal WHAT FILE COMMAND...: the command (an option at an
+# edge of its values) either answers, exit 0 with no NaN or infinity on
+# stdout nor in FILE (a table it writes; "" for none), or refuses, exit 2
+# with exactly one line on stderr and FILE not written. Anything else fails:
+# another exit code (a crash, a sanitizer's report), more lines, a NaN with
+# exit 0, or no end within 30 s (scaled by SHADERTWIN_TIME_SCALE). Sets `rc`
+# and `refusal` (the line, when it refused).
+# Lines of a table that start with '#' (its maker's record) are not read.
+expect_answer_or_refusal() {
+  local what="$1" file="$2"; shift 2
+  [ -z "$file" ] || rm -rf "$file"
+  set +e
+  timeout $((30 * ${SHADERTWIN_TIME_SCALE:-1})) "$@" >"$work/stdout" 2>"$work/stderr"
+  rc=$?
+  set -e
+  local err
+  mapfile -t err <"$work/stderr"
+  refusal=""
+  if [ "$rc" -eq 2 ]; then
+    refusal="${err[0]:-}"
+    [ "${#err[@]}" -eq 1 ] || fail "$what: exit 2 with ${#err[@]} lines on stderr: $(head -c 2000 "$work/stderr")"
+    [ -z "$file" ] || [ ! -e "$file" ] || fail "$what: refused, yet wrote $file"
+    return 0
+  fi
+  [ "$rc" -eq 0 ] || fail "$what: exit $rc ($(head -c 2000 "$work/stderr"))"
+  local re='(^|[^A-Za-z_])[-+]?(nan|inf|null)'
+  ! grep -qiE "$re" "$work/stdout" || fail "$what: exit 0 with a value that is not finite: $(grep -iE -m1 "$re" "$work/stdout")"
+  if [ -n "$file" ]; then
+    [ -s "$file" ] || fail "$what: exit 0 without $file"
+    grep -v '^#' "$file" >"$work/table" || true
+    ! grep -qiE "$re" "$work/table" || fail "$what: $file holds a value that is not finite: $(grep -iE -m1 "$re" "$work/table")"
+  fi
+}
