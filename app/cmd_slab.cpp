@@ -130,12 +130,18 @@ std::vector<optics::LayerSpec> read_layers(const SlabOptions& o) {
 // is the smaller. (It was sqrt(min(tau^2, roulette)) alone: --eta 100
 // --sigma-a 0.01 --sigma-s 1e9 --thickness 1e6 was put at 1e6 steps a
 // photon and one photon ran for minutes; --g 0.9999999999 --sigma-a 2e-6
-// --sigma-s 352 --thickness 1e9 at 4e4 where it took 1e9.)
+// --sigma-s 352 --thickness 1e9 at 4e4 where it took 1e9.) Each meeting
+// with a boundary is a step of the tracer too: about 1/p of them before a
+// photon leaves, and in an optically thin slab 1/tau between interactions
+// (--sigma-s 1e-320 --eta 100 --thickness 1e-12: no scattering at all, yet
+// 2e5 reflections a photon; behind a rough top each is a walk on the
+// microsurface, several times dearer).
 double mean_steps(const optics::McSetup& s) {
-    double tau = 0.0, albedo = 0.0, m = 1.0, p = 1.0;
+    double tau = 0.0, tau_actual = 0.0, albedo = 0.0, m = 1.0, p = 1.0;
     double n_above = s.n_above;
     for (const optics::McLayer& l : s.layers) {
         tau += (l.sigma_a + l.sigma_s * (1.0 - l.g)) * l.thickness;  // infinite for a half-space
+        tau_actual += (l.sigma_a + l.sigma_s) * l.thickness;
         albedo = std::max(albedo, l.sigma_s / (l.sigma_a + l.sigma_s));
         m = std::max(m, 1.0 / (1.0 - l.g));
         // Both ways across each interface: light is trapped in the denser side.
@@ -149,7 +155,9 @@ double mean_steps(const optics::McSetup& s) {
     const double roulette = (albedo < 1.0 ? 9.2 / (1.0 - albedo) : INFINITY) / m;
     const double slab = std::isinf(tau) ? INFINITY : tau * tau + tau / (2.0 * p);
     const double cut = std::min(roulette, slab), escape = 1.0 / (p * p);
-    return (escape >= cut ? cut : std::sqrt(escape * cut)) * m;
+    const double steps = (escape >= cut ? cut : std::sqrt(escape * cut)) * m;
+    const double reflections = std::min(1.0 / p, (steps + 1.0) * (1.0 + 1.0 / tau_actual));
+    return steps + reflections;
 }
 
 // One channel of a layer stack as the Monte Carlo tracer's setup: absolute
