@@ -3,11 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <thread>
+#include <unordered_map>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
 #include "scene/input_error.h"
+#include "scene/profile_albedo_gather.h"
 
 namespace st {
 
@@ -39,8 +43,135 @@ AlbedoMap read_albedo_map(JsonReader& r) {
     return m;
 }
 
+namespace {
+
+// The freckles' centres in a grid of cubic cells a little over 4 radii
+// wide: a freckle reaches a point only within 4 radii (q < 16), so only the
+// 27 cells around the point can hold one that does. The largest Gaussian
+// does not depend on the order the candidates come in, so the grid changes
+// no bit of the map, only its cost (before it, every texel tried every
+// freckle: 100,000 of them on a 4096 texture would take days).
+class FreckleGrid {
+public:
+    FreckleGrid(const std::vector<glm::dvec3>& centres, double radius)
+        : centres_(centres), cell_(4.0 * radius * 1.001) {
+        for (size_t k = 0; k < centres.size(); ++k) cells_[cell_of(centres[k])].push_back(k);
+    }
+    // The map's darkening at p: the largest exp(-q) of a freckle with q < 16.
+    double spot(const glm::dvec3& p, double r2) const {
+        double spot = 0;
+        const Cell at = cell_of(p);
+        for (int64_t dz = -1; dz <= 1; ++dz)
+            for (int64_t dy = -1; dy <= 1; ++dy)
+                for (int64_t dx = -1; dx <= 1; ++dx) {
+                    const auto it = cells_.find({at[0] + dx, at[1] + dy, at[2] + dz});
+                    if (it == cells_.end()) continue;
+                    for (size_t k : it->second) {
+                        const glm::dvec3 d = p - centres_[k];
+                        const double q = glm::dot(d, d) / r2;
+                        if (q < 16) spot = std::max(spot, std::exp(-q));
+                    }
+                }
+        return spot;
+    }
+
+private:
+    using Cell = std::array<int64_t, 3>;
+    struct CellHash {
+        size_t operator()(const Cell& c) const {
+            return size_t((uint64_t(c[0]) * 0x9e3779b97f4a7c15ull) ^ (uint64_t(c[1]) * 0xbf58476d1ce4e5b9ull) ^
+                          (uint64_t(c[2]) * 0x94d049bb133111ebull));
+        }
+    };
+    // Clamped far beyond any shape's cells (|p| <= 1e5 mm over cells of at
+    // least 4e-3 mm: 2.5e7), so that the conversion is defined.
+    Cell cell_of(const glm::dvec3& p) const {
+        const auto c = [&](double x) { return int64_t(std::clamp(std::floor(x / cell_), -1e12, 1e12)); };
+        return {c(p.x), c(p.y), c(p.z)};
+    }
+    const std::vector<glm::dvec3>& centres_;
+    double cell_;
+    std::unordered_map<Cell, std::vector<size_t>, CellHash> cells_;
+};
+
+// The largest side below `size` whose layout's gather stays within the
+// budget: the terms grow as the side to the fourth while the windows are
+// narrower than the layout, and at most so (a side of budget^(1/4) fits any
+// reach).
+int coarse_side(const ProfileShape& shape, int size, double terms, double reach99, double budget) {
+    int side = size;
+    while (terms > budget) {
+        side = std::max(2, std::min(side - 1, int(side * 0.95 * std::pow(budget / terms, 0.25))));
+        terms = gather_terms(texel_layout(shape, side), reach99);
+    }
+    return side;
+}
+
+// The map averaged over each texel of a side x side layout: k x k points
+// spread evenly over the texel (k the fine texels it spans along an axis,
+// rounded up), so that the map's detail is averaged where it lies rather
+// than shifted to the coarse texel's centre.
+std::array<std::vector<double>, 3> texel_means(const ProfileShape& shape, int side, int size,
+                                               const std::function<std::array<double, 3>(const glm::dvec3&)>& map) {
+    const size_t m = size_t(side) * size_t(side);
+    std::array<std::vector<double>, 3> mean;
+    for (std::vector<double>& v : mean) v.assign(m, 0.0);
+    const int k = (size + side - 1) / side;
+    for (int j = 0; j < side; ++j)
+        for (int i = 0; i < side; ++i) {
+            const size_t y = size_t(j) * side + size_t(i);
+            for (int b = 0; b < k; ++b)
+                for (int a = 0; a < k; ++a) {
+                    const double u = (i + (a + 0.5) / k) / side, v = (j + (b + 0.5) / k) / side;
+                    const std::array<double, 3> value = map(surface_point(shape, u, v).position);
+                    for (int c = 0; c < 3; ++c) mean[size_t(c)][y] += value[size_t(c)];
+                }
+            for (int c = 0; c < 3; ++c) mean[size_t(c)][y] /= double(k) * k;
+        }
+    return mean;
+}
+
+// The coarse layout's values at the fine texels' centres, bilinear between
+// the coarse texels' centres (wrapping in u where the layout does).
+std::array<std::vector<double>, 3> bilinear_up(const std::array<std::vector<double>, 3>& coarse, int side, int size,
+                                               bool wraps) {
+    std::array<std::vector<double>, 3> out;
+    for (std::vector<double>& o : out) o.resize(size_t(size) * size_t(size));
+    const auto axis = [&](int i, bool wrap, int& i0, int& i1, double& f) {
+        const double x = (i + 0.5) * side / size - 0.5;
+        const double fl = std::floor(x);
+        f = x - fl;
+        i0 = int(fl), i1 = i0 + 1;
+        if (wrap) {
+            i0 = (i0 + side) % side, i1 = i1 % side;
+        } else {
+            i0 = std::clamp(i0, 0, side - 1), i1 = std::clamp(i1, 0, side - 1);
+        }
+    };
+    for (int j = 0; j < size; ++j) {
+        int j0, j1;
+        double fv;
+        axis(j, false, j0, j1, fv);
+        for (int i = 0; i < size; ++i) {
+            int i0, i1;
+            double fu;
+            axis(i, wraps, i0, i1, fu);
+            const size_t x = size_t(j) * size + size_t(i);
+            for (int c = 0; c < 3; ++c) {
+                const std::vector<double>& v = coarse[size_t(c)];
+                const double a = (1 - fu) * v[size_t(j0) * side + size_t(i0)] + fu * v[size_t(j0) * side + size_t(i1)];
+                const double b = (1 - fu) * v[size_t(j1) * side + size_t(i0)] + fu * v[size_t(j1) * side + size_t(i1)];
+                out[size_t(c)][x] = (1 - fv) * a + fv * b;
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
 Texture albedo_texture(const AlbedoMap& map, const ProfileShape& shape, const BuiltProfiles& profiles, bool thin,
-                       int size) {
+                       int size, double gather_budget) {
     Texture t;
     t.sampler = "albedo";
     t.set_filter(TextureFilter::Linear);
@@ -55,21 +186,7 @@ Texture albedo_texture(const AlbedoMap& map, const ProfileShape& shape, const Bu
     if (shape.kind == "ellipsoid") t.wrap_s = TextureWrap::Repeat;
     t.width = t.height = size;
     const size_t n = size_t(size) * size_t(size);
-
-    // Texel centres on the exact surface, and the area each covers.
-    std::vector<glm::dvec3> p(n);
-    std::vector<double> area(n);
-    const double du = 1.0 / size;
-    for (int j = 0; j < size; ++j)
-        for (int i = 0; i < size; ++i) {
-            const double u = (i + 0.5) * du, v = (j + 0.5) * du;
-            p[size_t(j) * size + size_t(i)] = surface_point(shape, u, v).position;
-            const glm::dvec3 pu = surface_point(shape, u + 0.5 * du, v).position -
-                                  surface_point(shape, u - 0.5 * du, v).position;
-            const glm::dvec3 pv = surface_point(shape, u, v + 0.5 * du).position -
-                                  surface_point(shape, u, v - 0.5 * du).position;
-            area[size_t(j) * size + size_t(i)] = glm::length(glm::cross(pu, pv));
-        }
+    const TexelLayout layout = texel_layout(shape, size);
 
     // The map: white with darker freckles, each a Gaussian in world distance.
     SplitMix rng{map.seed};
@@ -80,148 +197,51 @@ Texture albedo_texture(const AlbedoMap& map, const ProfileShape& shape, const Bu
         const double v = shape.kind == "ellipsoid" ? std::acos(1.0 - 2.0 * xi) / 3.14159265358979323846 : xi;
         centres.push_back(surface_point(shape, u, v).position);
     }
-    // Per channel (channel-major: the gather below reads one channel's run
-    // of neighbours at a time).
-    std::array<std::vector<double>, 3> albedo;
-    for (std::vector<double>& a : albedo) a.assign(n, 1.0);
     const double r2 = map.radius_mm * map.radius_mm;
-    for (size_t x = 0; x < n; ++x) {
-        double spot = 0;
-        for (const glm::dvec3& c : centres) {
-            const glm::dvec3 d = p[x] - c;
-            const double q = glm::dot(d, d) / r2;
-            if (q < 16) spot = std::max(spot, std::exp(-q));
-        }
-        for (int c = 0; c < 3; ++c) albedo[size_t(c)][x] = 1.0 - map.strength[size_t(c)] * spot;
-    }
+    const FreckleGrid freckles(centres, map.radius_mm);
+    const auto map_at = [&](const glm::dvec3& p) {
+        const double spot = freckles.spot(p, r2);
+        return std::array<double, 3>{1.0 - map.strength[0] * spot, 1.0 - map.strength[1] * spot,
+                                     1.0 - map.strength[2] * spot};
+    };
 
-    // The convolution with the profile, within its reach, as a table of the
-    // profile per channel in r (the profile's own interpolation is slow).
-    const double reach = profiles.r_max;
-    constexpr int kTable = 1024;
-    std::array<std::vector<double>, 3> kernel;
-    for (std::vector<double>& k : kernel) k.resize(kTable + 1);
-    for (int k = 0; k <= kTable; ++k) {
-        const double r = reach * k / kTable;
-        for (int c = 0; c < 3; ++c)
-            kernel[size_t(c)][size_t(k)] = profiles.R[size_t(c)](r) + (thin ? profiles.T[size_t(c)](r) : 0.0);
-    }
-    // The texture's blur needs the profile's body, not its far tail (the
-    // gather keeps that): the radius holding 99 % of each channel's weight.
-    double reach99 = 0;
-    for (int c = 0; c < 3; ++c) {
-        std::vector<double> cumulative(kTable + 1, 0.0);
-        for (int k = 1; k <= kTable; ++k) {
-            const double r0 = reach * (k - 1) / kTable, r1 = reach * k / kTable;
-            cumulative[size_t(k)] = cumulative[size_t(k - 1)] + 0.5 * (kernel[size_t(c)][size_t(k - 1)] * r0 +
-                                                                      kernel[size_t(c)][size_t(k)] * r1) * (r1 - r0);
+    // The convolution with the profile: over the texture's own layout, or,
+    // where the profile's reach spans so many texels that the gather would
+    // pass its budget, over the largest coarser layout within it, from the
+    // map averaged over each coarse texel, read back bilinearly (both are
+    // quadratures of the same blur; docs/profile.md has how far apart).
+    const ProfileTable table = profile_table(profiles, thin);
+    const int threads = int(std::clamp(std::thread::hardware_concurrency(), 1u, 64u));
+    const double terms = gather_terms(layout, table.reach99);
+    std::array<std::vector<double>, 3> blurred;
+    if (terms <= gather_budget) {
+        // Per channel (channel-major: the gather reads one channel's run of
+        // neighbours at a time).
+        std::array<std::vector<double>, 3> albedo;
+        for (std::vector<double>& a : albedo) a.resize(n);
+        for (size_t x = 0; x < n; ++x) {
+            const std::array<double, 3> value = map_at(layout.p[x]);
+            for (int c = 0; c < 3; ++c) albedo[size_t(c)][x] = value[size_t(c)];
         }
-        int k = 0;
-        while (k < kTable && cumulative[size_t(k)] < 0.99 * cumulative[kTable]) ++k;
-        reach99 = std::max(reach99, reach * k / kTable);
+        blurred = gather(layout, albedo, table, threads);
+    } else {
+        const int side = coarse_side(shape, size, terms, table.reach99, gather_budget);
+        const TexelLayout coarse = texel_layout(shape, side);
+        blurred = bilinear_up(gather(coarse, texel_means(shape, side, size, map_at), table, threads), side, size,
+                              coarse.wraps);
     }
-    // The positions as separate coordinate arrays too, so that the gather's
-    // first loop runs over the lanes of the machine.
-    std::vector<double> px(n), py(n), pz(n);
-    for (size_t x = 0; x < n; ++x) px[x] = p[x].x, py[x] = p[x].y, pz[x] = p[x].z;
-    // One row of a texel's window: each neighbour's share of the weights,
-    // whether it lies within reach99, in the order the sums take them.
-    struct RowTerms {
-        std::vector<double> weight[3], sum[3];
-        std::vector<unsigned char> within;
-        void resize(size_t m) {
-            for (int c = 0; c < 3; ++c) weight[c].resize(m), sum[c].resize(m);
-            within.resize(m);
-        }
-    } terms;
-    terms.resize(size_t(size) + 1);
 
     std::vector<float> out(n * 4);
     std::array<double, 3> mean{0, 0, 0};
     double total_area = 0;
-    const bool wraps = shape.kind == "ellipsoid";
-    for (int j = 0; j < size; ++j) {
-        for (int i = 0; i < size; ++i) {
-            const size_t x = size_t(j) * size + size_t(i);
-            // The window of texels that can lie within the reach: the texel's
-            // spacing along u and v here, at most half the layout.
-            // (the next texel, or at the last row or column the one before it)
-            const size_t xu = size_t(j) * size + size_t(i + 1 < size ? i + 1 : i - 1);
-            const size_t xv = size_t(j + 1 < size ? j + 1 : j - 1) * size + size_t(i);
-            const double su = std::max(glm::length(p[xu] - p[x]), 1e-9), sv = std::max(glm::length(p[xv] - p[x]), 1e-9);
-            const int wu = std::min(size / 2, int(std::ceil(reach99 / su)) + 1);
-            const int wv = std::min(size / 2, int(std::ceil(reach99 / sv)) + 1);
-            // The columns i - wu ... i + wu in order, wrapped on an ellipsoid
-            // (at most two runs, and 2 wu + 1 <= size + 1 of them), clipped
-            // elsewhere.
-            int runs[2][2], run_count = 0;
-            if (!wraps) {
-                runs[0][0] = std::max(0, i - wu), runs[0][1] = std::min(size - 1, i + wu), run_count = 1;
-            } else if (i - wu < 0) {
-                runs[0][0] = i - wu + size, runs[0][1] = size - 1, runs[1][0] = 0, runs[1][1] = i + wu, run_count = 2;
-            } else if (i + wu >= size) {
-                runs[0][0] = i - wu, runs[0][1] = size - 1, runs[1][0] = 0, runs[1][1] = i + wu - size, run_count = 2;
-            } else {
-                runs[0][0] = i - wu, runs[0][1] = i + wu, run_count = 1;
-            }
-            const double qx = px[x], qy = py[x], qz = pz[x];
-            std::array<double, 3> sum{0, 0, 0}, weight{0, 0, 0};
-            for (int b = std::max(0, j - wv); b <= std::min(size - 1, j + wv); ++b) {
-                // Each neighbour's terms, independent of the others: the
-                // distance as glm::length computes it ((dx dx + dy dy) + dz dz),
-                // the profile read linearly from its table.
-                size_t m = 0;
-                for (int run = 0; run < run_count; ++run) {
-                    const size_t first = size_t(b) * size + size_t(runs[run][0]);
-                    const int count = runs[run][1] - runs[run][0] + 1;
-                    const double *qx_ = px.data() + first, *qy_ = py.data() + first, *qz_ = pz.data() + first;
-                    const double *a_ = area.data() + first, *al0 = albedo[0].data() + first,
-                                 *al1 = albedo[1].data() + first, *al2 = albedo[2].data() + first;
-                    const double *k0 = kernel[0].data(), *k1 = kernel[1].data(), *k2 = kernel[2].data();
-                    double *w0 = terms.weight[0].data() + m, *w1 = terms.weight[1].data() + m,
-                           *w2 = terms.weight[2].data() + m;
-                    double *s0 = terms.sum[0].data() + m, *s1 = terms.sum[1].data() + m, *s2 = terms.sum[2].data() + m;
-                    unsigned char* in = terms.within.data() + m;
-                    // (No branch: the division is done for every neighbour and
-                    // its result dropped beyond reach99, so that the loop runs
-                    // over the machine's lanes.)
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC ivdep  // the rows' arrays are distinct (clang checks at run time)
-#endif
-                    for (int t = 0; t < count; ++t) {
-                        const double dx = qx_[t] - qx, dy = qy_[t] - qy, dz = qz_[t] - qz;
-                        const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
-                        const bool within = r < reach99;
-                        const double f_any = r / reach * kTable;
-                        const double f = within ? f_any : 0.0;
-                        const int k = std::min(int(f), kTable - 1);
-                        const double w = f - k;
-                        const double pr0 = (1 - w) * k0[k] + w * k0[k + 1];
-                        const double pr1 = (1 - w) * k1[k] + w * k1[k + 1];
-                        const double pr2 = (1 - w) * k2[k] + w * k2[k + 1];
-                        w0[t] = pr0 * a_[t], w1[t] = pr1 * a_[t], w2[t] = pr2 * a_[t];
-                        s0[t] = pr0 * a_[t] * al0[t], s1[t] = pr1 * a_[t] * al1[t], s2[t] = pr2 * a_[t] * al2[t];
-                        in[t] = within;
-                    }
-                    m += size_t(count);
-                }
-                // The sums in window order, as one texel after another.
-                for (size_t t = 0; t < m; ++t) {
-                    if (!terms.within[t]) continue;
-                    for (int c = 0; c < 3; ++c) {
-                        sum[size_t(c)] += terms.sum[c][t];
-                        weight[size_t(c)] += terms.weight[c][t];
-                    }
-                }
-            }
-            for (int c = 0; c < 3; ++c) {
-                const double v = weight[size_t(c)] > 0 ? sum[size_t(c)] / weight[size_t(c)] : albedo[size_t(c)][x];
-                out[x * 4 + size_t(c)] = float(v);
-                mean[size_t(c)] += v * area[x];
-            }
-            out[x * 4 + 3] = 1.0f;
-            total_area += area[x];
+    for (size_t x = 0; x < n; ++x) {
+        for (int c = 0; c < 3; ++c) {
+            const double v = blurred[size_t(c)][x];
+            out[x * 4 + size_t(c)] = float(v);
+            mean[size_t(c)] += v * layout.area[x];
         }
+        out[x * 4 + 3] = 1.0f;
+        total_area += layout.area[x];
     }
     // Normalised to a white mean over the surface (Sec. 3.1, second step).
     for (size_t x = 0; x < n; ++x)

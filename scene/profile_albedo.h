@@ -3,10 +3,11 @@
 // profile (R, plus T for thin geometry), "so that the color of the diffusion
 // process is used, rather than the texture color" normalised to a white mean,
 // and bound as the gather's `albedo`, which scales the diffused light.
-// The convolution runs over the shape's exact surface (profile_shape.h):
-// each texel gathers the texels within the profile's reach in world
-// distance, weighted by the profile and each texel's area, the weights
-// normalised per texel (so the layout's seams and borders lose nothing).
+// The convolution runs over the shape's exact surface (profile_shape.h,
+// profile_albedo_gather.h): each texel gathers the texels within the
+// profile's reach in world distance, weighted by the profile and each
+// texel's area, the weights normalised per texel (so the layout's seams and
+// borders lose nothing).
 #pragma once
 
 #include <array>
@@ -32,10 +33,17 @@ struct AlbedoMap {
 // Reads the scene's "albedo" object (absent: white); InputError names a bad field.
 AlbedoMap read_albedo_map(JsonReader& albedo);
 
+// The convolution's budget, in neighbour terms (profile_albedo_gather.h):
+// about five seconds of one core. Above it the convolution runs on the
+// largest coarser layout within it, from the map averaged over each coarse
+// texel, and is read back bilinearly. The built-in textured head (512
+// texels, about 3,000 neighbours each: 8e8 terms) stays below it.
+inline constexpr double kAlbedoGatherBudget = 1.5e9;
+
 // The sampler "albedo": 1x1 white without a map, else the convolved and
 // normalised map at `size` x `size` (RGBA32F, bilinear; u repeats on an
 // ellipsoid, whose layout wraps there).
 Texture albedo_texture(const AlbedoMap& map, const ProfileShape& shape, const BuiltProfiles& profiles, bool thin,
-                       int size);
+                       int size, double gather_budget = kAlbedoGatherBudget);
 
 }  // namespace st

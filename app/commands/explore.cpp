@@ -47,6 +47,10 @@ struct CaseResult {
 struct KindCount {
     long cases = 0, pass = 0, fail = 0, refused = 0, errors = 0;
     std::map<std::string, long> refusals;  // message (without the scene's name) -> count
+    double seconds = 0;                    // the cases' time, shrinking included
+    long slowest_case = -1;                // where a long run's time goes
+    double slowest_seconds = 0;
+    std::string slowest_drawn;
 };
 
 nlohmann::json read_document(const std::string& path) {
@@ -196,7 +200,11 @@ int cmd_explore(const ExploreOptions& options, const CommonOptions& common) {
             nlohmann::json refusals = nlohmann::json::object();
             for (const auto& [m, n] : c.refusals) refusals[m] = n;
             per_kind[kind] = {{"cases", c.cases}, {"pass", c.pass},       {"fail", c.fail},
-                              {"refused", c.refused}, {"errors", c.errors}, {"refusals", refusals}};
+                              {"refused", c.refused}, {"errors", c.errors}, {"refusals", refusals},
+                              {"seconds", c.seconds}};
+            if (c.slowest_case >= 0)
+                per_kind[kind]["slowest"] = {{"case", c.slowest_case}, {"seconds", c.slowest_seconds},
+                                             {"drawn", c.slowest_drawn}};
             bad += c.fail + c.errors;
         }
         summary["kinds"] = per_kind;
@@ -226,10 +234,14 @@ int cmd_explore(const ExploreOptions& options, const CommonOptions& common) {
         const std::string name = "case-" + std::to_string(i);
         progress.step(kind + " " + base.name + " " + assignments_text(drawn));
         const fs::path dir = cases_dir / name;
+        const double case_start = elapsed();
         CaseResult r = explorer.run(name, document(drawn), dir.string());
         ++run;
         KindCount& c = counts[kind];
         ++c.cases;
+        // (The first run only: shrinking below adds to `seconds`, not here.)
+        if (const double t = elapsed() - case_start; t > c.slowest_seconds)
+            c.slowest_case = i, c.slowest_seconds = t, c.slowest_drawn = base.name + " with " + assignments_text(drawn);
         switch (r.outcome) {
         case Outcome::Pass: ++c.pass; break;
         case Outcome::Refused: ++c.refused, ++c.refusals[r.message]; break;
@@ -239,6 +251,7 @@ int cmd_explore(const ExploreOptions& options, const CommonOptions& common) {
         if (elapsed() - last_written >= 60) summary_json(false), last_written = elapsed();
         if (!Explorer::failing(r)) {
             fs::remove_all(dir);
+            c.seconds += elapsed() - case_start;
             continue;
         }
         // Shrink: drop one field at a time while the case still fails.
@@ -281,6 +294,7 @@ int cmd_explore(const ExploreOptions& options, const CommonOptions& common) {
                             {"failures", last.outcome == Outcome::Error ? std::vector<std::string>{last.message} : last.failures},
                             {"reproducer", repro_path.string()},
                             {"images", dir.string()}});
+        c.seconds += elapsed() - case_start;
     }
 
     const nlohmann::json summary = summary_json(true);
