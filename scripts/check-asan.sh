@@ -16,7 +16,8 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
   CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DSHADERTWIN_SANITIZE=address,undefined -DSHADERTWIN_FUZZ=ON >&2
 fi
-cmake --build "$build" -j "$(nproc)" >&2
+# (microbench too: no test runs it, and this is where CI compiles it.)
+cmake --build "$build" -j "$(nproc)" --target all microbench >&2
 source scripts/sanitizer-env.sh
 ctest --test-dir "$build" --output-on-failure -j 2 -LE "^(scene|long)$" "$@"
 fuzz/run.sh "$build" "${FUZZ_SECONDS:-20}"
