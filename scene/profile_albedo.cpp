@@ -3,7 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
+#include <list>
+#include <mutex>
+#include <string>
 #include <thread>
 #include <unordered_map>
 #include <vector>
@@ -247,6 +251,60 @@ Texture albedo_texture(const AlbedoMap& map, const ProfileShape& shape, const Bu
     for (size_t x = 0; x < n; ++x)
         for (int c = 0; c < 3; ++c) out[x * 4 + size_t(c)] = float(out[x * 4 + size_t(c)] / (mean[size_t(c)] / total_area));
     t.texels32 = std::move(out);
+    return t;
+}
+
+namespace {
+
+// The inputs that decide a texture, exactly (doubles by their bits).
+std::string texture_key(const AlbedoMap& m, const ProfileShape& s, const BuiltProfiles* profiles, bool thin, int size) {
+    std::string key;
+    const auto add = [&](double d) {
+        uint64_t bits;
+        std::memcpy(&bits, &d, sizeof bits);
+        key += std::to_string(bits) + ",";
+    };
+    key += m.pattern + "," + std::to_string(m.count) + "," + std::to_string(m.seed) + ",";
+    add(m.radius_mm);
+    for (double v : m.strength) add(v);
+    key += s.kind + "," + std::to_string(s.segments) + ",";
+    for (double v : {s.size_mm, s.bend_deg, s.radii.x, s.radii.y, s.radii.z, s.seam_azimuth_deg}) add(v);
+    key += std::to_string(reinterpret_cast<uintptr_t>(profiles)) + "," + (thin ? "1," : "0,") + std::to_string(size);
+    return key;
+}
+
+}  // namespace
+
+Texture scene_albedo_texture(const AlbedoMap& map, const ProfileShape& shape,
+                             const std::shared_ptr<const BuiltProfiles>& profiles, bool thin, int size) {
+    if (!map.textured()) return albedo_texture(map, shape, *profiles, thin, size);
+    struct Entry {
+        std::string key;
+        std::shared_ptr<const BuiltProfiles> profiles;  // kept alive, so that its address names it alone
+        Texture texture;
+    };
+    static std::mutex mutex;
+    static std::list<Entry> kept;  // most recent first
+    constexpr size_t kKeptBytes = size_t(64) << 20;
+    const std::string key = texture_key(map, shape, profiles.get(), thin, size);
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        for (auto it = kept.begin(); it != kept.end(); ++it)
+            if (it->key == key) {
+                kept.splice(kept.begin(), kept, it);
+                return kept.front().texture;
+            }
+    }
+    Texture t = albedo_texture(map, shape, *profiles, thin, size);
+    const size_t bytes = t.texels32.size() * sizeof(float);
+    if (bytes > kKeptBytes) return t;
+    std::lock_guard<std::mutex> lock(mutex);
+    kept.push_front({key, profiles, t});
+    size_t total = 0;
+    for (auto it = kept.begin(); it != kept.end();) {
+        total += it->texture.texels32.size() * sizeof(float);
+        it = total > kKeptBytes ? kept.erase(it) : std::next(it);
+    }
     return t;
 }
 

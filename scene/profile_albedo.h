@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "frame/frame.h"
@@ -45,5 +46,13 @@ inline constexpr double kAlbedoGatherBudget = 1.5e9;
 // ellipsoid, whose layout wraps there).
 Texture albedo_texture(const AlbedoMap& map, const ProfileShape& shape, const BuiltProfiles& profiles, bool thin,
                        int size, double gather_budget = kAlbedoGatherBudget);
+
+// albedo_texture() for a scene: the textures of the last few loads are
+// kept (64 MB at most), so a scene loaded again with the same map, shape,
+// profiles and size (explore's cases of one base scene, a bench's reloads)
+// does not convolve again. The profiles are known by their object:
+// build_profiles() hands out one per material and process.
+Texture scene_albedo_texture(const AlbedoMap& map, const ProfileShape& shape,
+                             const std::shared_ptr<const BuiltProfiles>& profiles, bool thin, int size);
 
 }  // namespace st

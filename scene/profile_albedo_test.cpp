@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 namespace st {
@@ -84,6 +85,27 @@ TEST(ProfileAlbedo, ACoarserLayoutPastTheBudgetGivesTheSameBlur) {
         for (size_t x = 0; x < coarser.texels32.size() / 4; ++x) sum += coarser.texels32[x * 4 + size_t(c)];
         EXPECT_NEAR(sum / (96.0 * 96.0), 1.0, 1e-5) << c;
     }
+}
+
+// A scene's texture is kept for its next load: the same texels for the
+// same inputs, and a change to any of them convolves anew.
+TEST(ProfileAlbedo, ASceneKeepsItsTextureForTheSameInputsOnly) {
+    Fixture f;
+    auto profiles = std::make_shared<const BuiltProfiles>(f.profiles);
+    const Texture first = scene_albedo_texture(f.map, f.shape, profiles, false, 64);
+    EXPECT_EQ(first.texels32, albedo_texture(f.map, f.shape, f.profiles, false, 64).texels32);
+    EXPECT_EQ(scene_albedo_texture(f.map, f.shape, profiles, false, 64).texels32, first.texels32);
+    AlbedoMap stronger = f.map;
+    stronger.strength[1] = 0.55;
+    EXPECT_NE(scene_albedo_texture(stronger, f.shape, profiles, false, 64).texels32, first.texels32);
+    ProfileShape larger = f.shape;
+    larger.size_mm = 41;
+    EXPECT_NE(scene_albedo_texture(f.map, larger, profiles, false, 64).texels32, first.texels32);
+    BuiltProfiles wider = f.profiles;
+    for (int c = 0; c < 3; ++c) wider.R[size_t(c)] = [](double r) { return std::exp(-r / 2); };
+    EXPECT_NE(scene_albedo_texture(f.map, f.shape, std::make_shared<const BuiltProfiles>(wider), false, 64).texels32,
+              first.texels32);
+    EXPECT_EQ(scene_albedo_texture(f.map, f.shape, profiles, false, 64).texels32, first.texels32);
 }
 
 TEST(ProfileAlbedo, WithoutAMapTheTextureIsWhite) {

@@ -196,7 +196,7 @@ Frame build_profile_scene(JsonReader& scene, SceneSize size) {
     d.textures.push_back(profiles->profile_R);
     d.textures.push_back(profiles->profile_T);
     d.textures.push_back(profiles->pattern);
-    d.textures.push_back(albedo_texture(spec.albedo, spec.shape, *profiles, thin, target_size));
+    d.textures.push_back(scene_albedo_texture(spec.albedo, spec.shape, profiles, thin, target_size));
     d.uniforms = {uniform("view_proj", view_proj),
                   int_uniform("samples", gather.samples),
                   uniform("r_max", float(profiles->r_max)),

@@ -36,6 +36,8 @@ struct ProfileMesh {
     std::vector<glm::dvec3> bounds;  // points whose hull holds it, for the camera's near and far
 };
 
+// (A field added here that surface_point() reads joins the key of
+// scene_albedo_texture(), profile_albedo.cpp.)
 struct ProfileShape {
     std::string kind = "slab";  // "slab", "sheet", "ellipsoid"
     double size_mm = 40;        // slab, sheet: the side
