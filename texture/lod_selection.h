@@ -36,16 +36,24 @@ inline LevelChoice choose_levels(Float lod, MipFilter mip_filter, int last_level
     } else if (mip_filter == MipFilter::Linear) {
         const Float fl = floor(lod);
         Float fpart = lod - fl;
-        Int l0 = itrunc(fl);
-        // Below the base or at or past the last level only one level counts.
+        Int l0 = itrunc(fl), l1 = l0 + Int(1);
+        // Below the base or at or past the last level only one level counts,
+        // and *both* levels become that one (§2.6): a magnified lane reads
+        // level 0 in the second pass too, not level 1. Its weight is 0, but
+        // which texels it reads there still matters: to the other lanes of
+        // its 8-lane vector, through whether one of them has a seamless cube
+        // corner (§5.6), and to itself when a texel there is infinite
+        // (0 * inf is NaN).
         const Mask below = l0 < Int(0);
         l0 = select(below, Int(0), l0);
+        l1 = select(below, Int(0), l1);
         fpart = select(below, Float(0.0f), fpart);
         const Mask top = !(l0 < last);
         l0 = select(top, last, l0);
+        l1 = select(top, last, l1);
         fpart = select(top, Float(0.0f), fpart);
         c.level0 = l0;
-        c.level1 = select(top, last, l0 + Int(1));
+        c.level1 = l1;
         c.fpart = fpart;
         c.two_levels = true;
     } else {

@@ -200,6 +200,9 @@ Vec4 SamplerCube::sample_at(const Face& f, const LevelChoice& c) const {
     if (!c.two_levels) return c0;
     const Mask blend = any_in_group(!(c.fpart <= Float(0.0f)));
     if (none(blend)) return c0;
+    // The second pass runs every lane of the vector at its own level1; a
+    // magnified lane is back at level 0 there (choose_levels), and its taps
+    // count for the vector's corner branch in filter_level (§5.6).
     return blend_levels(c.fpart, c0, filter_level(f, c.level1), blend);
 }
 
