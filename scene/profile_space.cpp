@@ -119,7 +119,8 @@ const ParamSpace& profile_space() {
                  "radii by the profile's inverse CDF on a Vogel spiral, or uniform over the reach");
         s.integer("gather.samples", 1, kMaxGatherSamples, gather.samples, "samples per pixel")
             .explore_at_most(1024).edge({1, 2, 3, 64});
-        s.integer("gather.table_size", 2, 65536, gather.table_size, "entries of the R(r) and T(r) tables")
+        s.integer("gather.table_size", 2, 16384, gather.table_size,
+                  "entries of the R(r) and T(r) tables (each a texture row: llvmpipe's widest is 16384)")
             .explore_at_most(8192).edge({2, 3, 256});
         s.number("gather.tail_fraction", 1e-9, 0.5, gather.tail_fraction, "the share of the profile the reach may leave out")
             .log().edge({1e-3});

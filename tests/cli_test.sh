@@ -437,6 +437,8 @@ PY
     expect_bad_input "profile: no samples" "$bin" render profile-parchment-multipole --set gather.samples=0
     expect_bad_input "profile: too many samples" "$bin" render profile-parchment-multipole --set gather.samples=5000
     expect_bad_input "profile: a one-entry table" "$bin" render profile-parchment-multipole --set gather.table_size=1
+    # (Each table is a texture row, and llvmpipe's widest is 16384: wider was "GL error 1281".)
+    expect_bad_input "profile: a table wider than llvmpipe's textures" "$bin" render profile-parchment-multipole --set gather.table_size=16385
     expect_bad_input "profile: a bad layer" "$bin" render profile-parchment-multipole \
       --set 'material.layers=[{"sigma_a":[1,1],"sigma_s":[1,1,1],"g":0,"eta":1.3,"thickness":1}]'
     expect_bad_input "profile: a stack for the multipole" "$bin" render profile-parchment-multipole \
