@@ -89,7 +89,7 @@ void read_blend(JsonReader& r, DrawState& state) {
 }
 
 // The fields every pass has, the scene's own (final) pass included.
-Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSize image) {
+Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSize image, TexelBudget& budget) {
     Pass pass;
     SceneSize size = image;
     if (r.has("target")) {
@@ -125,7 +125,7 @@ Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSiz
     if (r.has("textures"))
         for (JsonReader& t : declared_objects(r, "textures")) {
             const std::string sampler = t.text("sampler");
-            draw.textures.push_back(read_pattern_texture(t, sampler));
+            draw.textures.push_back(read_pattern_texture(t, sampler, budget));
         }
     draw.state.depth_test = r.boolean("depth_test");
     if (draw.state.depth_test && !pass.clear)
@@ -190,14 +190,15 @@ Frame build_conformance_scene(JsonReader& scene, SceneSize size) {
                                      "' is named twice");
         }
     }
+    TexelBudget budget;  // the textures of every pass together
     if (scene.has("passes"))
         for (JsonReader& p : declared_objects(scene, "passes")) {
             where.push_back(p.path() + ".");
-            frame.passes.push_back(read_pass(p, frame.targets, size));
+            frame.passes.push_back(read_pass(p, frame.targets, size, budget));
             p.finish();
         }
     where.push_back("");
-    frame.passes.push_back(read_pass(scene, frame.targets, size));
+    frame.passes.push_back(read_pass(scene, frame.targets, size, budget));
     if (!frame.passes.back().target.empty())
         throw InputError("field 'target': the scene's own pass draws the image; put target passes in 'passes'");
     check_target_reads(frame, where);

@@ -26,7 +26,10 @@ ParamSpace pattern_texture_fields(bool render_targets) {
                "the texture is this render target as earlier passes left it; then only the filter, wrap and LOD "
                "fields apply");
     // A generated pattern (no `target`):
-    s.integer("width", 1, 4096, "required", "texels across").explore_at_most(1024).edge({1, 2, 3, 64, 65});
+    s.integer("width", 1, 4096, "required",
+              "texels across (a scene's textures hold at most 1 GiB, levels and faces included)")
+        .explore_at_most(1024)
+        .edge({1, 2, 3, 64, 65});
     s.integer("height", 1, 4096, "required", "texels up (a cube's faces are square)").explore_at_most(1024)
         .edge({1, 2, 3, 64, 65});
     s.boolean("cube", false, "six square faces, sampled with seamless filtering (min and mag filter alike)")

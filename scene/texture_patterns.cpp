@@ -72,7 +72,15 @@ MipFilter mip_filter_named(const std::string& name) {
 
 }  // namespace
 
-Texture read_pattern_texture(JsonReader& r, const std::string& sampler) {
+void TexelBudget::take(uint64_t bytes, const std::string& field) {
+    used_ += bytes;
+    if (used_ > kBytes)
+        throw InputError("field '" + field + "': the scene's textures would hold " +
+                         std::to_string((used_ + (uint64_t(1) << 20) - 1) >> 20) + " MiB of texels, more than the " +
+                         std::to_string(kBytes >> 20) + " MiB a scene's generated textures may");
+}
+
+Texture read_pattern_texture(JsonReader& r, const std::string& sampler, TexelBudget& budget) {
     Texture t;
     t.sampler = sampler;
     // Every field's domain and default: pattern_texture_fields() in scene/shared_spaces.cpp.
@@ -112,14 +120,19 @@ Texture read_pattern_texture(JsonReader& r, const std::string& sampler) {
                          "': a cube map needs the same min and mag filter (the switch is not modelled)");
     const bool checker = r.choice("pattern") == "checker";
     const auto seed = uint32_t(r.integer("seed"));
-    fill_faces(t, t.width, t.height, checker, seed, t.texels8, t.texels32);
-
     // Mip levels: none, a box filter of level 0 ("box"), or each level its
     // own pattern ("distinct", seeded per level), which shows in every texel
     // which level a sample took.
     const std::string mipmaps = r.choice("mipmaps");
     const int full = full_chain_levels(t.width, t.height);
     const int levels = mipmaps == "none" ? 1 : r.has("levels") ? r.integer_in("levels", 1, full) : full;
+    // (Float formats are held as four floats a texel, RGBA8 as four bytes.)
+    uint64_t bytes = 0;
+    for (int level = 0; level < levels; ++level)
+        bytes += uint64_t(std::max(1, t.width >> level)) * uint64_t(std::max(1, t.height >> level)) *
+                 uint64_t(t.faces()) * (t.format == TextureFormat::RGBA8 ? 4u : 16u);
+    budget.take(bytes, r.field("width"));
+    fill_faces(t, t.width, t.height, checker, seed, t.texels8, t.texels32);
     if (mipmaps == "box") generate_box_mips(t, levels);
     if (mipmaps == "distinct")
         for (int level = 1; level < levels; ++level) {

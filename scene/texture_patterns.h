@@ -17,9 +17,27 @@ uint32_t hash32(uint32_t x);
 // A value in [0, 1] as an 8-bit texel, rounded to nearest (clamped first).
 uint8_t unit_to_byte(double v);
 
+// What one scene's generated textures may hold, levels and faces included,
+// counted as each is read, before its texels are made: a scene asking for
+// more is refused, naming the texture. (The memory check of
+// app/memory_budget.h runs after loading; without this, 65 passes of 8
+// cube maps could ask the host for a terabyte first.)
+class TexelBudget {
+public:
+    // 1 GiB: eight 1024 x 1024 cube maps in RGBA32F with their mip chains;
+    // one 4096 x 4096 cube map in RGBA32F (2 GiB with its chain) is refused.
+    static constexpr uint64_t kBytes = uint64_t(1) << 30;
+    // Adds a texture's bytes; InputError naming `field` past kBytes.
+    void take(uint64_t bytes, const std::string& field);
+
+private:
+    uint64_t used_ = 0;
+};
+
 // Reads a texture object: {"format": "rgba8"|"rgba32f", "filter":
 // "linear"|"nearest", "wrap": "repeat"|"clamp", "width", "height",
-// "pattern": "checker"|"noise", "seed"}. `sampler` is the GLSL uniform name.
-Texture read_pattern_texture(JsonReader& r, const std::string& sampler);
+// "pattern": "checker"|"noise", "seed"}. `sampler` is the GLSL uniform name;
+// the texels are taken from the scene's `budget`.
+Texture read_pattern_texture(JsonReader& r, const std::string& sampler, TexelBudget& budget);
 
 }  // namespace st

@@ -31,7 +31,8 @@ Frame build_triangles_scene(JsonReader& scene, SceneSize size) {
     const bool textured = scene.has("texture");
     if (textured) {
         JsonReader tex = scene.object("texture");
-        draw.textures.push_back(read_pattern_texture(tex, "tex"));
+        TexelBudget budget;
+        draw.textures.push_back(read_pattern_texture(tex, "tex", budget));
     }
     draw.vertex = draw.fragment = textured ? "textured" : "interp";
     draw.state.depth_test = scene.boolean("depth_test");

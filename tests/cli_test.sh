@@ -536,6 +536,12 @@ PY
     expect_bad_input "cube with non-square faces" "$bin" render conformance-cube-rgba8-linear --set textures.0.height=4
     expect_bad_input "mip chain too long" "$bin" render conformance-mip-rgba8-linear-mip-linear --set textures.0.levels=9
     expect_bad_input "unknown texture format" "$bin" render conformance-mip-rgba8-linear-mip-linear --set textures.0.format='"rgb9"'
+    # Past the texels a scene's textures may hold (scene/texture_patterns.h:
+    # 1 GiB): refused while read, before a texel is made (a 4096 cube map in
+    # RGBA32F with its mip chain is 2 GiB; 65 passes of 8 could ask for a
+    # terabyte).
+    expect_bad_input "textures past the scene's texel budget" "$bin" render conformance-cube-rgba8-linear-mip-linear \
+      --set textures.0.format='"rgba32f"' --set textures.0.width=4096 --set textures.0.height=4096
     expect_bad_input "unknown min filter" "$bin" render conformance-mip-rgba8-linear-mip-linear --set textures.0.min_filter='"cubic"'
     expect_bad_input "unknown wrap" "$bin" render conformance-mip-rgba8-linear-mip-linear --set textures.0.wrap='"border"'
     expect_bad_input "unknown blend factor" "$bin" render conformance-blend-one-one --set 'blend=["one","two"]'
