@@ -51,7 +51,7 @@ ParamSpace pass_fields() {
               "one_minus_dst_colour", "dst_alpha", "one_minus_dst_alpha"},
              nullptr, "glBlendFuncSeparate(src_rgb, dst_rgb[, src_alpha, dst_alpha]), GL_FUNC_ADD: 2 or 4 factors")
         .listed(2, 4);
-    s.include(triangle_list_fields(true, true, true));
+    s.include(triangle_list_fields(true, true, true, kMaxAttribute));
     return s;
 }
 

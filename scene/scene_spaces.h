@@ -6,8 +6,8 @@
 
 namespace st {
 
-// The largest colour (clear colours included) and texture coordinate a
-// triangle list takes: scene/shared_spaces.cpp says why.
+// The largest colour (clear colours included) a triangle list takes, and a
+// conformance scene's texture coordinate: scene/shared_spaces.cpp says why.
 inline constexpr double kMaxAttribute = 1e6;
 
 const ParamSpace& triangles_space();
@@ -22,7 +22,7 @@ const ParamSpace& profile_space();
 ParamSpace pattern_texture_fields(bool render_targets);
 // The list of triangles (scene/triangle_list.h), under "triangles": positions
 // in pixels only (else clip space too), white when no colour is given, uvs
-// always (else only with a texture).
-ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs_always);
+// always (else only with a texture), uvs within +-max_uv.
+ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs_always, double max_uv);
 
 }  // namespace st

@@ -43,7 +43,7 @@ ParamSpace pattern_texture_fields(bool render_targets) {
     return s;
 }
 
-ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs_always) {
+ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs_always, double max_uv) {
     ParamSpace s("triangles");
     s.object("triangles", true, "the triangles, in draw order", 1, 1 << 20).explore_at_most(10000);
     const std::string clip = "clip space: [x, y], [x, y, z] or [x, y, z, w] (z defaults to 0, w to 1, w must not be "
@@ -53,14 +53,11 @@ ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs
     s.numbers("triangles[].positions", 2, pixels_only ? 3 : 4, -kHuge, kHuge, "required",
               pixels_only ? pixels : "`coordinates` \"clip\": " + clip + "; \"pixels\": " + pixels)
         .in_rows(3).draws(-2, 2);
-    // Colours and texture coordinates end at a million (issue 26, found by
-    // explore --seed 2026 on triangles): colours of 1e30 made the blends'
-    // products (colour x alpha) infinite on both pipelines, and texture
-    // coordinates past 1e8 part llvmpipe's nearest texel from the twin's
-    // (max_diff_8bit 139-224; the cause is not traced yet). A million is far
-    // past any radiance or repeat count a scene needs: at 1e6 a single float
-    // no longer tells apart the texels of a 16-texel map's repeat. A clear
-    // colour likewise (1e30 under a blend reading the destination).
+    // Colours end at a million (issue 26, found by explore --seed 2026 on
+    // triangles): colours of 1e30 made the blends' products (colour x alpha)
+    // infinite on both pipelines. A million is far past any radiance a scene
+    // needs. A clear colour likewise (1e30 under a blend reading the
+    // destination).
     s.numbers("triangles[].colour", 3, 4, -kMaxAttribute, kMaxAttribute,
               colour_optional ? nlohmann::json::array({1.0, 1.0, 1.0, 1.0}) : nlohmann::json(),
               colour_optional ? "one colour for all three corners (alpha defaults to 1; no colour: white)"
@@ -70,7 +67,13 @@ ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs
               colour_optional ? "per-corner colours (alpha defaults to 1), instead of `colour`"
                               : "per-corner colours (alpha defaults to 1); this or `colour` is required")
         .in_rows(3).draws(0, 1).edge({0, 1}).only_if_present();
-    s.numbers("triangles[].uvs", 2, 2, -kMaxAttribute, kMaxAttribute, uvs_always ? nlohmann::json("required") : nlohmann::json(),
+    // Texture coordinates: the triangles kind samples them as they are and
+    // takes any (kHuge; the nearest texel at 1e9 and beyond follows
+    // llvmpipe's integer conversions, texture/texel_math.h). A conformance
+    // program computes with them: its derivatives program squared 1e30 to
+    // infinity on both pipelines (explore conformance --seed 2026), so there
+    // they end at a million as colours do.
+    s.numbers("triangles[].uvs", 2, 2, -max_uv, max_uv, uvs_always ? nlohmann::json("required") : nlohmann::json(),
               uvs_always ? "per-corner texture coordinates" : "per-corner texture coordinates, required with `texture`")
         .in_rows(3).draws(-2, 2).edge({0, 1}).only_if_present();  // only with a texture
     return s;

@@ -11,7 +11,7 @@ const ParamSpace& triangles_space() {
     static const ParamSpace space = [] {
         ParamSpace s("triangles");
         s.include(common_space());
-        s.include(triangle_list_fields(false, false, false));
+        s.include(triangle_list_fields(false, false, false, kHuge));
         s.choice("coordinates", {"clip", "pixels"}, "clip", "how positions are given: clip space, or window pixels");
         s.numbers("clear_colour", 4, 4, -kMaxAttribute, kMaxAttribute, nlohmann::json::array({0.0, 0.0, 0.0, 0.0}),
                   "the colour the target is cleared to")

@@ -225,6 +225,21 @@ ST_INLINE Float floor(Float x) {
 #endif
 }
 
+// Round to nearest, ties to even, as a float (roundps 0, as llvm.nearbyint):
+// unlike iround, exact for every float, so values beyond 2^31 come back
+// unchanged and NaN and infinity stay what they are.
+ST_INLINE Float round_even(Float x) {
+#if defined(ST_SIMD_AVX512)
+    return Float(FloatV(_mm512_roundscale_ps(__m512(x.v), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC)));
+#elif defined(ST_SIMD_AVX2)
+    return Float(FloatV(_mm256_round_ps(__m256(x.v), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC)));
+#else
+    Float r;
+    for (int i = 0; i < kLanes; ++i) r.v[i] = __builtin_roundevenf(x.v[i]);
+    return r;
+#endif
+}
+
 ST_INLINE Float abs(Float x) { return bit_cast_float(bit_cast_int(x) & Int(0x7fffffff)); }
 
 // A NaN operand yields the other operand (std::fmax's rule for quiet NaNs,

@@ -698,8 +698,10 @@ PY
     # Domains the explorer led to (docs/explore.md): refused with one line.
     expect_refused "a colour of 1e30 (blends overflow to infinity)" "triangles.1.colours" \
       "$bin" compare triangles-alpha-blend --set 'triangles.1.colours=[[1,1,1,1],[1,1,1,1e30],[1,1,1,1]]'
-    expect_refused "texture coordinates of 1e9 (nearest texels part)" "triangles.0.uvs" \
-      "$bin" compare triangles-texture-rgba32f-nearest-clamp-pot --set 'triangles.0.uvs=[[1e9,1e9],[0,1e9],[0,0.5]]'
+    expect_refused "texture coordinates beyond 1e30" "triangles.0.uvs" \
+      "$bin" compare triangles-texture-rgba32f-nearest-clamp-pot --set 'triangles.0.uvs=[[1e31,1e9],[0,1e9],[0,0.5]]'
+    expect_refused "a conformance texture coordinate of 1e30 (the derivatives overflow)" "triangles.0.uvs" \
+      "$bin" compare conformance-derivatives --set 'triangles.0.uvs=[[-0.3,0.1],[1e30,0.1],[1.7,1.4]]'
     ;;
 
   scene_docs)

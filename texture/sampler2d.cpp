@@ -207,9 +207,8 @@ ST_INLINE Sampler2D::LevelLanes Sampler2D::level_lanes(Int level) const {
 }
 
 ST_INLINE Vec4 Sampler2D::texel(const LevelLanes& level, Int x, Int y, unsigned read) const {
-    // Taps are inside their level by construction (wrapped or clamped)
-    // except the npot REPEAT taps of a NaN coordinate, whose weight is NaN
-    // anyway: those read 0, never outside the texels.
+    // Taps are inside their level by construction (wrapped or clamped, NaN
+    // and infinite coordinates included); the mask only guards the texels.
     const Mask inside = !(x < Int(0)) && !(y < Int(0)) && x < level.width && y < level.height;
     return gather_texels(tex_->format == TextureFormat::RGBA8, rgba8_.data(), rgba32_.data(),
                          level.base + y * level.width + x, inside, read);
@@ -238,23 +237,6 @@ glm::vec4 Sampler2D::sample(const glm::vec2& st) const {
     return lane0(sample_lod(Vec2(Float(st.x), Float(st.y)), Float(0.0f)));
 }
 
-// Whether the bilinear taps of a float texture can be read as texel pairs:
-// every tap inside its level (not so only for the npot REPEAT taps of a NaN
-// coordinate).
-ST_INLINE bool Sampler2D::float_pairs(const LevelLanes& level, const texel::LinearTaps& u,
-                                      const texel::LinearTaps& v) const {
-    if (tex_->format == TextureFormat::RGBA8) return false;
-    // CLAMP_TO_EDGE (a NaN coordinate clamps to the last texel) and pot
-    // REPEAT (taps masked by size - 1) keep every tap inside by construction.
-    auto always_inside = [](TextureWrap w, bool pot) {
-        return w == TextureWrap::ClampToEdge || (w == TextureWrap::Repeat && pot);
-    };
-    if (always_inside(tex_->wrap_s, pot_w_) && always_inside(tex_->wrap_t, pot_h_)) return true;
-    const Mask inside = !(u.i0 < Int(0)) && u.i0 < level.width && !(u.i1 < Int(0)) && u.i1 < level.width &&
-                        !(v.i0 < Int(0)) && v.i0 < level.height && !(v.i1 < Int(0)) && v.i1 < level.height;
-    return all(inside);
-}
-
 // The two taps of row y, texels u.i0 and u.i1: one 8-float load per lane
 // where they are neighbours (rgba32_ has a spare texel at its end), a
 // gather for the lanes where the wrap or the clamp makes them otherwise.
@@ -274,8 +256,8 @@ ST_INLINE void Sampler2D::row_pair(const LevelLanes& level, const texel::LinearT
 ST_INLINE Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter,
                               Mask as_nearest, unsigned read) const {
     if (filter == TextureFilter::Nearest)
-        return texel(level, nearest_texel(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s, false),
-                     nearest_texel(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t, false), read);
+        return texel(level, nearest_texel(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s),
+                     nearest_texel(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t), read);
     LinearTaps u = linear_taps_float(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s);
     LinearTaps v = linear_taps_float(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t);
     // Lanes that want NEAREST in a vector that filters linearly take the
@@ -290,7 +272,9 @@ ST_INLINE Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, 
     // A texture one texel high (a table) has both rows in row 0 under every
     // wrap: the same taps, read once; the lerp between them stays.
     const bool one_row = tex_->height == 1;
-    if (float_pairs(level, u, v)) {
+    // Float texels are read as pairs: every wrap keeps every tap inside its
+    // level, whatever the coordinate (linear_taps_float).
+    if (tex_->format != TextureFormat::RGBA8) {
         row_pair(level, u, v.i0, read, t00, t10);
         if (one_row) t01 = t00, t11 = t10;
         else row_pair(level, u, v.i1, read, t01, t11);
@@ -321,8 +305,8 @@ ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level,
                               Int& ga) const {
     const int32_t* texels = rgba8_.data();
     if (filter == TextureFilter::Nearest) {
-        const Int x = nearest_texel(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s, true);
-        const Int y = nearest_texel(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t, true);
+        const Int x = nearest_texel(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s);
+        const Int y = nearest_texel(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t);
         const Int t = simd::gather(texels, level.base + y * level.width + x, Mask(true));
         rb = red_blue(t);
         ga = green_alpha(t);

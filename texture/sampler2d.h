@@ -99,7 +99,6 @@ private:
     void filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, Int& rb,
                        Int& ga) const;
     Vec4 texel(const LevelLanes& level, Int x, Int y, unsigned read = texel::kReadRGBA) const;
-    bool float_pairs(const LevelLanes& level, const texel::LinearTaps& u, const texel::LinearTaps& v) const;
     void row_pair(const LevelLanes& level, const texel::LinearTaps& u, Int y, unsigned read, Vec4& left,
                   Vec4& right) const;
     void build_alpha_quads();

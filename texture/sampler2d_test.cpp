@@ -4,6 +4,7 @@
 #include "texture/sampler2d.h"
 
 #include "texture/mip_generation.h"
+#include "texture/texel_math.h"
 
 #include <cstring>
 #include <iterator>
@@ -140,6 +141,70 @@ TEST(Nearest, PicksTheTexelUnderTheCoordinate) {
                 EXPECT_EQ(s.sample(glm::vec2(right, 0.5f)), s.fetch(x, 1));
             }
         }
+}
+
+// Coordinates whose texel position s * size is beyond the int32 range, or
+// infinite, or NaN: llvmpipe converts with cvttps2dq (INT32_MIN) and wraps
+// that integer, and its mirror rounds in float (lp_build_sample_wrap_nearest,
+// lp_build_coord_mirror). The rules were measured on llvmpipe with triangles
+// scenes, finite s to 3.4e38 and NaN (tests/regressions/
+// triangles-texture-*-uvs-*.json); infinity follows from the same code.
+TEST(Nearest, HugeInfiniteAndNaNCoordinates) {
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    struct Case {
+        TextureWrap wrap;
+        int size;
+        float s;
+        int texel;
+    };
+    const Case cases[] = {
+        // CLAMP_TO_EDGE: past 2^31 texels the integer is INT32_MIN, so the
+        // clamp gives texel 0 however far right; below that, the last texel.
+        {TextureWrap::ClampToEdge, 8, 268435440.0f, 7},  // s * 8 just below 2^31
+        {TextureWrap::ClampToEdge, 8, 268435456.0f, 0},  // s * 8 = 2^31
+        {TextureWrap::ClampToEdge, 13, 3e8f, 0},
+        {TextureWrap::ClampToEdge, 13, 1e30f, 0},
+        {TextureWrap::ClampToEdge, 13, -1e30f, 0},
+        {TextureWrap::ClampToEdge, 13, inf, 0},
+        {TextureWrap::ClampToEdge, 13, -inf, 0},
+        {TextureWrap::ClampToEdge, 13, nan, 0},
+        // REPEAT, power of two: INT32_MIN & (size - 1) is 0.
+        {TextureWrap::Repeat, 8, 1e30f, 0},
+        {TextureWrap::Repeat, 8, -1e30f, 0},
+        {TextureWrap::Repeat, 8, inf, 0},
+        {TextureWrap::Repeat, 8, nan, 0},
+        // REPEAT, not a power of two: a huge float has no fraction (texel
+        // 0); inf and NaN have a NaN one, which fract_safe makes 1 - ulp.
+        {TextureWrap::Repeat, 13, 1e30f, 0},
+        {TextureWrap::Repeat, 13, -1e30f, 0},
+        {TextureWrap::Repeat, 13, inf, 12},
+        {TextureWrap::Repeat, 13, nan, 12},
+        // MIRRORED_REPEAT: an odd integer folds to 1 (the last texel), an
+        // even one to 0; from 2^24 on every float is even, also past 2^32
+        // where an integer rounding would have given INT32_MIN; inf - inf
+        // and NaN fold to 0.
+        {TextureWrap::MirroredRepeat, 13, 8388609.0f, 12},
+        {TextureWrap::MirroredRepeat, 13, 4294967296.0f, 0},
+        {TextureWrap::MirroredRepeat, 13, 1e10f, 0},
+        {TextureWrap::MirroredRepeat, 13, -1e30f, 0},
+        {TextureWrap::MirroredRepeat, 13, inf, 0},
+        {TextureWrap::MirroredRepeat, 13, nan, 0},
+    };
+    for (const Case& c : cases) {
+        const bool pot = (c.size & (c.size - 1)) == 0;
+        const Int i = texel::nearest_texel(Float(c.s), Int(c.size), Float(float(c.size)), pot, c.wrap);
+        for (int lane = 0; lane < kLanes; ++lane)
+            ASSERT_EQ(i[lane], c.texel) << "wrap " << int(c.wrap) << " size " << c.size << " s " << c.s;
+        // The whole sampler, both formats (RGBA8 REPEAT and CLAMP_TO_EDGE
+        // take the 8-bit path, which floors before converting: the same
+        // texel).
+        for (TextureFormat format : {TextureFormat::RGBA32F, TextureFormat::RGBA8}) {
+            const Texture t = ramp(format, TextureFilter::Nearest, c.wrap, c.size, 3);
+            const Sampler2D s(t);
+            EXPECT_EQ(s.sample(glm::vec2(c.s, 0.5f)), s.fetch(c.texel, 1))
+                << "wrap " << int(c.wrap) << " size " << c.size << " s " << c.s << " format " << int(format);
+        }
+    }
 }
 
 // The 8-bit path quantises the weight to 1/256: a quarter of the way from 0

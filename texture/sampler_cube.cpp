@@ -117,8 +117,8 @@ Vec4 SamplerCube::texel(Int level, Int face, Int x, Int y) const {
 void SamplerCube::nearest_unorm8(const Face& f, Int level, Int& rb, Int& ga) const {
     const Int size = simd::gather(level_size_.data(), level, Mask(true));
     const Float size_f = simd::to_float(size);
-    const Int x = nearest_texel(f.s, size, size_f, true, TextureWrap::ClampToEdge, true);
-    const Int y = nearest_texel(f.t, size, size_f, true, TextureWrap::ClampToEdge, true);
+    const Int x = nearest_texel(f.s, size, size_f, true, TextureWrap::ClampToEdge);
+    const Int y = nearest_texel(f.t, size, size_f, true, TextureWrap::ClampToEdge);
     const Int index = simd::gather(level_base_.data(), level, Mask(true)) + (f.face * size + y) * size + x;
     const Int t = simd::gather(rgba8_.data(), index, Mask(true));
     rb = red_blue(t);
@@ -132,8 +132,8 @@ Vec4 SamplerCube::filter_level(const Face& f, Int level) const {
     const Int size = simd::gather(level_size_.data(), level, Mask(true));
     const Float size_f = simd::to_float(size);
     if (tex_->min_filter == TextureFilter::Nearest)
-        return texel(level, f.face, nearest_texel(f.s, size, size_f, true, TextureWrap::ClampToEdge, false),
-                     nearest_texel(f.t, size, size_f, true, TextureWrap::ClampToEdge, false));
+        return texel(level, f.face, nearest_texel(f.s, size, size_f, true, TextureWrap::ClampToEdge),
+                     nearest_texel(f.t, size, size_f, true, TextureWrap::ClampToEdge));
     const Float u = maxps(f.s, Float(0.0f)) * size_f - Float(0.5f);
     const Float v = maxps(f.t, Float(0.0f)) * size_f - Float(0.5f);
     const Float u_floor = floor(u), v_floor = floor(v);

@@ -21,14 +21,14 @@ inline bool is_pot(int n) { return (n & (n - 1)) == 0; }
 // x86 maxps: a > b ? a : b, so a NaN in either operand gives b.
 ST_INLINE Float maxps(Float a, Float b) { return select(a > b, a, b); }
 
-// std::clamp(x, lo, hi) per lane: a NaN stays NaN.
-ST_INLINE Float clamp_like_std(Float x, Float lo, Float hi) { return select(x < lo, lo, select(hi < x, hi, x)); }
-
 // MIRRORED_REPEAT folds s into [0, 1] once, at the sample's centre
 // (lp_build_coord_mirror, posOnly): |2 (s/2 - rne(s/2))|, NaN -> 0.
+// The rounding stays in float (lp_build_round is llvm.nearbyint): an
+// integer conversion would give INT32_MIN from |s| >= 2^32 on, where every
+// float is even and the fold is 0; infinity folds to inf - inf, NaN, so 0.
 ST_INLINE Float mirror(Float s) {
     const Float c = s * Float(0.5f);
-    const Float f = c - simd::to_float(iround(c));
+    const Float f = c - simd::round_even(c);
     return maxps(simd::abs(f + f), Float(0.0f));
 }
 
@@ -66,11 +66,13 @@ ST_INLINE LinearTaps linear_taps_float(Float s, Int size, Float size_f, bool pot
         t.i1 = (itrunc(fl) + Int(1)) & last;
     } else {
         // Normalised repeat is fract(); the -0.5 then needs a fix-up below 0.
+        // The test is unordered (lp_build_compare): a NaN coordinate takes
+        // the last texel and texel 0, its taps inside like any other.
         Float u = s - floor(s);
         u = u * size_f - Float(0.5f);
         const Float fl = floor(u);
         t.weight = u - fl;
-        t.i0 = select(u < Float(0.0f), last, itrunc(fl));
+        t.i0 = select(!(u >= Float(0.0f)), last, itrunc(fl));
         t.i1 = select(t.i0 != last, t.i0 + Int(1), Int(0));
     }
     return t;
@@ -122,18 +124,19 @@ ST_INLINE Int lerp8_pairs(Int w, Int v0, Int v1) {
 // Float lerp: fma(t, v1 - v0, v0), as lp_build_mad fuses it.
 ST_INLINE Float lerp_float(Float t, Float v0, Float v1) { return fma(t, v1 - v0, v0); }
 
-// The nearest texel along one axis. The SoA and AoS paths differ only for
-// CLAMP_TO_EDGE beyond 2^31 texels (the AoS floor converts to INT32_MIN).
-ST_INLINE Int nearest_texel(Float s, Int size, Float size_f, bool pot, TextureWrap wrap, bool aos) {
+// The nearest texel along one axis (lp_build_sample_wrap_nearest, and
+// wrap_nearest_int on the AoS path, which selects the same texel). Every
+// float-to-int conversion is cvttps2dq's: NaN, infinity and anything beyond
+// 2^31 in magnitude give INT32_MIN, which the wraps then treat as any
+// integer (simd::itrunc).
+ST_INLINE Int nearest_texel(Float s, Int size, Float size_f, bool pot, TextureWrap wrap) {
     const Int last = size - Int(1);
-    if (wrap == TextureWrap::ClampToEdge) {
-        const Float u = s * size_f;
-        if (aos) return simd::clamp(itrunc(floor(u)), Int(0), last);
-        // itrunc is enough: the clamp removes every negative.
-        const Int i = select(simd::isnan(u), Int(0), itrunc(clamp_like_std(u, Float(-1.0f), size_f)));
-        return simd::clamp(i, Int(0), last);
-    }
+    // No clamp of the float first: s * size at or beyond 2^31 converts to
+    // INT32_MIN and clamps to texel 0, not the last one. The AoS path
+    // floors before converting; after the clamp that is the same texel.
+    if (wrap == TextureWrap::ClampToEdge) return simd::clamp(itrunc(s * size_f), Int(0), last);
     if (wrap == TextureWrap::MirroredRepeat) return simd::min(itrunc(mirror(s) * size_f), last);
+    // INT32_MIN & (size - 1) is texel 0.
     if (pot) return itrunc(floor(s * size_f)) & last;
     // fract_safe keeps the fraction below 1: minps(fraction, 1 - ulp), so a
     // NaN coordinate gives the last texel.
