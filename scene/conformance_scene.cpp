@@ -132,7 +132,11 @@ Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSiz
         throw InputError("field '" + r.field("clear") + "': a pass that keeps its colour cannot test depth");
     read_blend(r, draw.state);
     draw.vertices.attribute_count = 3;  // position, colour, uv
-    read_triangle_list(r, size, TriangleListFormat{true, true, true}, draw);
+    // The viewport as the pipeline takes it (0 width: the whole target).
+    const Viewport viewport{float(pass.viewport_x), float(pass.viewport_y),
+                            float(pass.viewport_width ? pass.viewport_width : pass.width),
+                            float(pass.viewport_height ? pass.viewport_height : pass.height), 0, 1};
+    read_triangle_list(r, size, viewport, TriangleListFormat{true, true, true}, draw);
     pass.draws.push_back(std::move(draw));
     return pass;
 }

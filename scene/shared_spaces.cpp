@@ -50,8 +50,12 @@ ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs
                              "0 as a float)";
     const std::string pixels = "window pixels (y up, origin bottom-left): [x, y] or [x, y, depth], depth in [0, 1] "
                                "defaulting to 0.5";
+    // Clipping in float can throw a vertex of a triangle whose coordinates
+    // lie ~1e20 apart far off the frame (issue 26): raster/setup_reach.h.
+    const std::string snap = "; clipped as the pipeline clips, a triangle's window positions must stay within "
+                             "+-2^20 pixels";
     s.numbers("triangles[].positions", 2, pixels_only ? 3 : 4, -kHuge, kHuge, "required",
-              pixels_only ? pixels : "`coordinates` \"clip\": " + clip + "; \"pixels\": " + pixels)
+              (pixels_only ? pixels : "`coordinates` \"clip\": " + clip + "; \"pixels\": " + pixels) + snap)
         .in_rows(3).draws(-2, 2);
     // Colours end at a million (issue 26, found by explore --seed 2026 on
     // triangles): colours of 1e30 made the blends' products (colour x alpha)

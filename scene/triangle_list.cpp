@@ -2,7 +2,9 @@
 #include "scene/triangle_list.h"
 
 #include <algorithm>
+#include <cstdio>
 
+#include "raster/setup_reach.h"
 #include "scene/input_error.h"
 #include "scene/param_space.h"
 
@@ -27,6 +29,17 @@ glm::vec4 clip_position(const std::vector<double>& p) {
                      p.size() > 3 ? float(p[3]) : 1.0f);
 }
 
+// Vertex i's position, the first attribute of each vertex.
+const glm::vec4& position_of(const DrawCall& draw, size_t i) {
+    return draw.vertices.data[size_t(draw.indices[i]) * size_t(draw.vertices.attribute_count)];
+}
+
+std::string short_float(float v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.7g", double(v));
+    return buf;
+}
+
 }  // namespace
 
 glm::vec4 rgba(const std::vector<double>& v) {
@@ -39,7 +52,8 @@ glm::vec4 rgba(const std::vector<double>& v) {
 // reason the per-triangle fields are read with their declared lengths and
 // ranges (triangle_list_fields() in scene/shared_spaces.cpp), taken from the
 // space once here rather than looked up per triangle.
-void read_triangle_list(JsonReader& scene, SceneSize size, TriangleListFormat format, DrawCall& draw) {
+void read_triangle_list(JsonReader& scene, SceneSize size, const Viewport& viewport, TriangleListFormat format,
+                        DrawCall& draw) {
     const FieldSpec& list = scene.spec("triangles");
     const FieldSpec& pos = scene.spec("triangles[].positions");
     const FieldSpec& one = scene.spec("triangles[].colour");
@@ -107,6 +121,15 @@ void read_triangle_list(JsonReader& scene, SceneSize size, TriangleListFormat fo
                     0.0f, 1.0f));
             }
         }
+        const size_t first = draw.indices.size() - kCorners;
+        if (const auto w = first_unsnappable_position(position_of(draw, first), position_of(draw, first + 1),
+                                                      position_of(draw, first + 2), viewport))
+            throw InputError("field '" + t.field("positions") + "': clipped to the view volume, this triangle has a " +
+                             "vertex at window (" + short_float(w->x) + ", " + short_float(w->y) +
+                             "), beyond the +-2^20 pixels setup can snap (llvmpipe wraps such a position in int32 " +
+                             "and draws garbage): clipping rounds in float, and coordinates this far apart lose " +
+                             "the clipped vertex's place");
+
         t.finish();
     });
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "frame/frame.h"
+#include "raster/viewport.h"
 #include "scene/json_reader.h"
 #include "scene/scene_kinds.h"
 
@@ -19,6 +20,10 @@ struct TriangleListFormat {
 // An RGB or RGBA colour as a scene file gives it (alpha 1 when absent).
 glm::vec4 rgba(const std::vector<double>& v);
 
-void read_triangle_list(JsonReader& scene, SceneSize size, TriangleListFormat format, DrawCall& draw);
+// Positions pass the vertex program unchanged, so each triangle is checked
+// here, clipped to `viewport` as the pipeline clips it: one whose window
+// positions cannot be snapped is refused (raster/setup_reach.h).
+void read_triangle_list(JsonReader& scene, SceneSize size, const Viewport& viewport, TriangleListFormat format,
+                        DrawCall& draw);
 
 }  // namespace st

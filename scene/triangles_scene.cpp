@@ -39,7 +39,8 @@ Frame build_triangles_scene(JsonReader& scene, SceneSize size) {
     draw.state.blend = parse_blend(scene.choice("blend"));
     draw.vertices.attribute_count = textured ? 3 : 2;  // position, colour[, uv]
 
-    read_triangle_list(scene, size, TriangleListFormat{pixels, textured, false}, draw);
+    read_triangle_list(scene, size, Viewport{0, 0, float(size.width), float(size.height), 0, 1},
+                       TriangleListFormat{pixels, textured, false}, draw);
     pass.draws.push_back(std::move(draw));
     Frame frame;
     frame.passes.push_back(std::move(pass));

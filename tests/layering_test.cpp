@@ -33,7 +33,9 @@ const std::map<std::string, std::set<std::string>>& allowed() {
         // textures and samplers.
         {"reference", {"frame", "simd", "texture", "shading", "kernels"}},
         {"optics", {"reference"}},
-        {"scene", {"frame", "image", "simd", "texture", "shading", "kernels", "optics"}},
+        // A scene reader asks the pipeline's setup whether the positions it
+        // reads can be snapped (raster/setup_reach.h).
+        {"scene", {"frame", "image", "simd", "texture", "shading", "raster", "kernels", "optics"}},
         {"app", {"frame", "image", "simd", "texture", "shading", "raster", "kernels", "gl", "scene", "reference",
                  "optics"}},
         // The SDK a user's tool builds against: the runtime twins are written
