@@ -1,15 +1,22 @@
-// lane_vec.h: GLSL's vec2, vec3 and vec4 with one invocation per lane
-// (Vec2, Vec3, Vec4 of simd::Float), and bool as Mask. A fragment twin
-// writes `Vec3 n = normalize(Vec3(frag.varying(v_normal)));` where its GLSL
-// writes `vec3 n = normalize(v_normal.xyz);`. Only componentwise operators
-// live here; the GLSL built-ins (dot, normalize, exp, ...) are in
-// glsl_math.h, with llvmpipe's operation order.
+// lane_vec.h: GLSL's vector types with one invocation per lane: Vec2, Vec3,
+// Vec4 of simd::Float (vecN), IVecN of Int (ivecN), BVecN of Mask (bvecN).
+// A fragment twin writes `Vec3 n = normalize(Vec3(frag.varying(v_normal)));`
+// where its GLSL writes `vec3 n = normalize(v_normal.xyz);`, `c.rgb() * 0.5f`
+// where it writes `c.rgb * 0.5`, and `p.set_xz(q)` for `p.xz = q`. Only
+// constructors, swizzles and componentwise operators live here; the GLSL
+// built-ins (dot, normalize, exp, ...) are in shading/glsl_math.h, with
+// llvmpipe's operation order.
 #pragma once
+
+#include <initializer_list>
+#include <type_traits>
+#include <utility>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "simd/lane_swizzle.h"
 #include "simd/lanes.h"
 
 namespace st {
@@ -19,63 +26,222 @@ using simd::Int;
 using simd::Mask;
 using simd::kLanes;
 
-struct Vec2 {
-    Float x, y;
-    Vec2() = default;
-    Vec2(Float x_, Float y_) : x(x_), y(y_) {}
-    explicit Vec2(const glm::vec2& u) : x(u.x), y(u.y) {}  // a uniform, in every lane
+// GLSL's vecN (T = Float), ivecN (Int) and bvecN (Mask), N = 2, 3, 4, with
+// one invocation per lane. Components are x, y, z, w; swizzles read and
+// write as lane_swizzle.h says; constructors are GLSL's (a broadcast, the
+// components, smaller vectors and scalars side by side, the first
+// components of a larger vector, another component type converted).
+template <class T, int N> struct LaneVec;
+
+namespace lane_vec_detail {
+
+// GLSL's conversions between component types in a constructor: float(int)
+// rounds to nearest, int(float) truncates (NaN and out of range give
+// INT32_MIN, as llvmpipe's cvttps2dq), float(bool) and int(bool) are 1 or
+// 0, bool(x) is x != 0.
+template <class To> struct Convert;
+template <> struct Convert<Float> {
+    static ST_INLINE Float from(Float x) { return x; }
+    static ST_INLINE Float from(Int x) { return simd::to_float(x); }
+    static ST_INLINE Float from(Mask m) { return simd::select(m, Float(1.0f), Float(0.0f)); }
+};
+template <> struct Convert<Int> {
+    static ST_INLINE Int from(Int x) { return x; }
+    static ST_INLINE Int from(Float x) { return simd::itrunc(x); }
+    static ST_INLINE Int from(Mask m) { return simd::select(m, Int(1), Int(0)); }
+};
+template <> struct Convert<Mask> {
+    static ST_INLINE Mask from(Mask m) { return m; }
+    static ST_INLINE Mask from(Float x) { return x != Float(0.0f); }
+    static ST_INLINE Mask from(Int x) { return x != Int(0); }
 };
 
-struct Vec3 {
-    Float x, y, z;
-    Vec3() = default;
-    explicit Vec3(Float s) : x(s), y(s), z(s) {}
-    Vec3(Float x_, Float y_, Float z_) : x(x_), y(y_), z(z_) {}
-    explicit Vec3(const glm::vec3& u) : x(u.x), y(u.y), z(u.z) {}
-};
-
-struct Vec4 {
-    Float x, y, z, w;
-    Vec4() = default;
-    explicit Vec4(Float s) : x(s), y(s), z(s), w(s) {}
-    Vec4(Float x_, Float y_, Float z_, Float w_) : x(x_), y(y_), z(z_), w(w_) {}
-    Vec4(const Vec3& v, Float w_) : x(v.x), y(v.y), z(v.z), w(w_) {}
-    explicit Vec4(const glm::vec4& u) : x(u.x), y(u.y), z(u.z), w(u.w) {}
-    Vec2 xy() const { return {x, y}; }
-    Vec3 xyz() const { return {x, y, z}; }
-};
-
-#define ST_LANE_VEC_OPS(V, ...)                                                              \
-    ST_INLINE V operator+(const V& a, const V& b) { return {__VA_ARGS__(+)}; }               \
-    ST_INLINE V operator-(const V& a, const V& b) { return {__VA_ARGS__(-)}; }               \
-    ST_INLINE V operator*(const V& a, const V& b) { return {__VA_ARGS__(*)}; }               \
-    ST_INLINE V operator/(const V& a, const V& b) { return {__VA_ARGS__(/)}; }
-#define ST_VEC2_EACH(op) a.x op b.x, a.y op b.y
-#define ST_VEC3_EACH(op) a.x op b.x, a.y op b.y, a.z op b.z
-#define ST_VEC4_EACH(op) a.x op b.x, a.y op b.y, a.z op b.z, a.w op b.w
-ST_LANE_VEC_OPS(Vec2, ST_VEC2_EACH)
-ST_LANE_VEC_OPS(Vec3, ST_VEC3_EACH)
-ST_LANE_VEC_OPS(Vec4, ST_VEC4_EACH)
-#undef ST_LANE_VEC_OPS
-#undef ST_VEC2_EACH
-#undef ST_VEC3_EACH
-#undef ST_VEC4_EACH
-
-// vecN * float and float * vecN: each component times the scalar; vecN +
-// float adds it to each.
-ST_INLINE Vec2 operator*(const Vec2& a, Float s) { return {a.x * s, a.y * s}; }
-ST_INLINE Vec2 operator+(const Vec2& a, Float s) { return {a.x + s, a.y + s}; }
-ST_INLINE Vec2 operator-(const Vec2& a, Float s) { return {a.x - s, a.y - s}; }
-ST_INLINE Vec3 operator*(const Vec3& a, Float s) { return {a.x * s, a.y * s, a.z * s}; }
-ST_INLINE Vec3 operator*(Float s, const Vec3& a) { return {s * a.x, s * a.y, s * a.z}; }
-ST_INLINE Vec4 operator*(const Vec4& a, Float s) { return {a.x * s, a.y * s, a.z * s, a.w * s}; }
-
-ST_INLINE Vec2 select(Mask m, const Vec2& a, const Vec2& b) { return {select(m, a.x, b.x), select(m, a.y, b.y)}; }
-ST_INLINE Vec3 select(Mask m, const Vec3& a, const Vec3& b) {
-    return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z)};
+constexpr bool distinct(std::initializer_list<int> is) {
+    for (auto a = is.begin(); a != is.end(); ++a)
+        for (auto b = a + 1; b != is.end(); ++b)
+            if (*a == *b) return false;
+    return true;
 }
-ST_INLINE Vec4 select(Mask m, const Vec4& a, const Vec4& b) {
-    return {select(m, a.x, b.x), select(m, a.y, b.y), select(m, a.z, b.z), select(m, a.w, b.w)};
+
+// f(std::integral_constant<int, i>) for i = 0 .. N-1, in order.
+template <int N, class F> ST_INLINE void for_each_index(F&& f) {
+    [&]<int... I>(std::integer_sequence<int, I...>) { (f(std::integral_constant<int, I>()), ...); }(
+        std::make_integer_sequence<int, N>());
+}
+
+}  // namespace lane_vec_detail
+
+// What every size shares: components by index (at compile time, so that
+// each component stays a register), swizzles, conversions. A write through
+// a swizzle that repeats a component fails to compile where it is used.
+#define ST_LANE_VEC_COMMON(N_)                                                                     \
+    static constexpr int size = N_;                                                                \
+    template <int I> ST_INLINE const T& component() const {                                        \
+        return const_cast<LaneVec*>(this)->template component<I>();                                \
+    }                                                                                              \
+    template <int... I> ST_INLINE void assign(const LaneVec<T, int(sizeof...(I))>& v) {            \
+        static_assert(lane_vec_detail::distinct({I...}), "GLSL refuses a write repeating a component"); \
+        assign_from<0, I...>(v);                                                                   \
+    }                                                                                              \
+    template <class U> explicit LaneVec(const LaneVec<U, N_>& o) {                                 \
+        lane_vec_detail::for_each_index<N_>([&](auto i) {                                          \
+            constexpr int k = decltype(i)::value;                                                  \
+            component<k>() = lane_vec_detail::Convert<T>::from(o.template component<k>());         \
+        });                                                                                        \
+    }                                                                                              \
+    ST_SWIZZLES(N_)                                                                                \
+                                                                                                   \
+private:                                                                                           \
+    template <int K, int I, int... Rest, int M> ST_INLINE void assign_from(const LaneVec<T, M>& v) { \
+        component<I>() = v.template component<K>();                                                \
+        if constexpr (sizeof...(Rest) > 0) assign_from<K + 1, Rest...>(v);                         \
+    }                                                                                              \
+                                                                                                   \
+public:
+
+template <class T> struct LaneVec<T, 2> {
+    T x, y;
+    LaneVec() = default;
+    explicit LaneVec(T s) : x(s), y(s) {}
+    LaneVec(T x_, T y_) : x(x_), y(y_) {}
+    explicit LaneVec(const LaneVec<T, 3>& v) : x(v.x), y(v.y) {}
+    explicit LaneVec(const LaneVec<T, 4>& v) : x(v.x), y(v.y) {}
+    // A uniform (glm::vec2, ivec2 or bvec2), the same in every lane.
+    template <class U, glm::qualifier Q> explicit LaneVec(const glm::vec<2, U, Q>& u) : x(T(u.x)), y(T(u.y)) {}
+    template <int I> ST_INLINE T& component() {
+        static_assert(I >= 0 && I < 2, "vec2 has x and y");
+        if constexpr (I == 0) return x;
+        else return y;
+    }
+    ST_LANE_VEC_COMMON(2)
+};
+
+template <class T> struct LaneVec<T, 3> {
+    T x, y, z;
+    LaneVec() = default;
+    explicit LaneVec(T s) : x(s), y(s), z(s) {}
+    LaneVec(T x_, T y_, T z_) : x(x_), y(y_), z(z_) {}
+    LaneVec(const LaneVec<T, 2>& v, T z_) : x(v.x), y(v.y), z(z_) {}
+    LaneVec(T x_, const LaneVec<T, 2>& v) : x(x_), y(v.x), z(v.y) {}
+    explicit LaneVec(const LaneVec<T, 4>& v) : x(v.x), y(v.y), z(v.z) {}
+    template <class U, glm::qualifier Q>
+    explicit LaneVec(const glm::vec<3, U, Q>& u) : x(T(u.x)), y(T(u.y)), z(T(u.z)) {}
+    template <int I> ST_INLINE T& component() {
+        static_assert(I >= 0 && I < 3, "vec3 has x, y and z");
+        if constexpr (I == 0) return x;
+        else if constexpr (I == 1) return y;
+        else return z;
+    }
+    ST_LANE_VEC_COMMON(3)
+};
+
+template <class T> struct LaneVec<T, 4> {
+    T x, y, z, w;
+    LaneVec() = default;
+    explicit LaneVec(T s) : x(s), y(s), z(s), w(s) {}
+    LaneVec(T x_, T y_, T z_, T w_) : x(x_), y(y_), z(z_), w(w_) {}
+    LaneVec(const LaneVec<T, 3>& v, T w_) : x(v.x), y(v.y), z(v.z), w(w_) {}
+    LaneVec(T x_, const LaneVec<T, 3>& v) : x(x_), y(v.x), z(v.y), w(v.z) {}
+    LaneVec(const LaneVec<T, 2>& a, const LaneVec<T, 2>& b) : x(a.x), y(a.y), z(b.x), w(b.y) {}
+    LaneVec(const LaneVec<T, 2>& v, T z_, T w_) : x(v.x), y(v.y), z(z_), w(w_) {}
+    LaneVec(T x_, const LaneVec<T, 2>& v, T w_) : x(x_), y(v.x), z(v.y), w(w_) {}
+    LaneVec(T x_, T y_, const LaneVec<T, 2>& v) : x(x_), y(y_), z(v.x), w(v.y) {}
+    template <class U, glm::qualifier Q>
+    explicit LaneVec(const glm::vec<4, U, Q>& u) : x(T(u.x)), y(T(u.y)), z(T(u.z)), w(T(u.w)) {}
+    template <int I> ST_INLINE T& component() {
+        static_assert(I >= 0 && I < 4, "vec4 has x, y, z and w");
+        if constexpr (I == 0) return x;
+        else if constexpr (I == 1) return y;
+        else if constexpr (I == 2) return z;
+        else return w;
+    }
+    ST_LANE_VEC_COMMON(4)
+};
+
+#undef ST_LANE_VEC_COMMON
+
+using Vec2 = LaneVec<Float, 2>;
+using Vec3 = LaneVec<Float, 3>;
+using Vec4 = LaneVec<Float, 4>;
+using IVec2 = LaneVec<Int, 2>;
+using IVec3 = LaneVec<Int, 3>;
+using IVec4 = LaneVec<Int, 4>;
+using BVec2 = LaneVec<Mask, 2>;
+using BVec3 = LaneVec<Mask, 3>;
+using BVec4 = LaneVec<Mask, 4>;
+
+namespace lane_vec_detail {
+// r[i] = f(a[i], b[i]) (or f(a[i])) for each component, in component order.
+template <class R, class T, int N, class F> ST_INLINE LaneVec<R, N> each(const LaneVec<T, N>& a, F f) {
+    LaneVec<R, N> r;
+    for_each_index<N>([&](auto i) {
+        constexpr int k = decltype(i)::value;
+        r.template component<k>() = f(a.template component<k>());
+    });
+    return r;
+}
+template <class R, class T, int N, class F>
+ST_INLINE LaneVec<R, N> each(const LaneVec<T, N>& a, const LaneVec<T, N>& b, F f) {
+    LaneVec<R, N> r;
+    for_each_index<N>([&](auto i) {
+        constexpr int k = decltype(i)::value;
+        r.template component<k>() = f(a.template component<k>(), b.template component<k>());
+    });
+    return r;
+}
+}  // namespace lane_vec_detail
+
+// Componentwise arithmetic, as GLSL's operators on vectors: vector op
+// vector, vector op scalar and scalar op vector (the scalar taken as the
+// same operand on every component, each operation rounded once, the
+// operands in the order written). Float and Int vectors; % and the bit
+// operators are Int's.
+#define ST_LANE_VEC_OP(op)                                                                                    \
+    template <class T, int N> ST_INLINE LaneVec<T, N> operator op(const LaneVec<T, N>& a, const LaneVec<T, N>& b) { \
+        return lane_vec_detail::each<T>(a, b, [](const T& p, const T& q) { return p op q; });                 \
+    }                                                                                                         \
+    template <class T, int N>                                                                                 \
+    ST_INLINE LaneVec<T, N> operator op(const LaneVec<T, N>& a, const std::type_identity_t<T>& s) {           \
+        return lane_vec_detail::each<T>(a, [&](const T& p) { return p op s; });                               \
+    }                                                                                                         \
+    template <class T, int N>                                                                                 \
+    ST_INLINE LaneVec<T, N> operator op(const std::type_identity_t<T>& s, const LaneVec<T, N>& a) {           \
+        return lane_vec_detail::each<T>(a, [&](const T& p) { return s op p; });                               \
+    }                                                                                                         \
+    template <class T, int N, class U>                                                                        \
+    ST_INLINE LaneVec<T, N>& operator op##=(LaneVec<T, N>& a, const U& b) {                                   \
+        return a = a op b;                                                                                    \
+    }
+ST_LANE_VEC_OP(+)
+ST_LANE_VEC_OP(-)
+ST_LANE_VEC_OP(*)
+ST_LANE_VEC_OP(/)
+ST_LANE_VEC_OP(&)
+ST_LANE_VEC_OP(|)
+ST_LANE_VEC_OP(^)
+#undef ST_LANE_VEC_OP
+
+template <class T, int N> ST_INLINE LaneVec<T, N> operator-(const LaneVec<T, N>& a) {
+    return lane_vec_detail::each<T>(a, [](const T& p) { return -p; });
+}
+
+// GLSL's == and != on whole vectors: one bool, all components equal (or
+// not), per lane.
+template <class T, int N> ST_INLINE Mask operator==(const LaneVec<T, N>& a, const LaneVec<T, N>& b) {
+    Mask all = a.x == b.x;
+    lane_vec_detail::for_each_index<N>([&](auto i) {
+        constexpr int k = decltype(i)::value;
+        if constexpr (k > 0) all = all && (a.template component<k>() == b.template component<k>());
+    });
+    return all;
+}
+template <class T, int N> ST_INLINE Mask operator!=(const LaneVec<T, N>& a, const LaneVec<T, N>& b) {
+    return !(a == b);
+}
+
+// Each lane takes a's components where m is set, b's elsewhere.
+template <class T, int N> ST_INLINE LaneVec<T, N> select(Mask m, const LaneVec<T, N>& a, const LaneVec<T, N>& b) {
+    return lane_vec_detail::each<T>(a, b, [&](const T& p, const T& q) { return simd::select(m, p, q); });
 }
 
 // The types a shader function has when it is written once for both: F is
