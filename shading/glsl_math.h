@@ -18,8 +18,9 @@
 //   each product rounded (GLSL IR's matrix lowering).
 // - a*b + c in GLSL is never fused (lower_ffma32): twins write it plainly,
 //   and -ffp-contract=off keeps the compiler from fusing it.
-// - max/min return the other operand when one is NaN, as std::fmax does for
-//   quiet NaNs (what llvmpipe returns for NaN is not yet measured).
+// - max/min are gallivm's (lp_build_max_ext): one NaN operand gives the
+//   other, and a tie gives the second operand, so max(-0.0, 0.0) is +0.0
+//   (docs/llvmpipe/glsl-builtins.md, section 2.8).
 // The arithmetic follows gallivm/lp_bld_arit.c (lp_build_exp2,
 // lp_build_polynomial, lp_build_ifloor_fract, lp_build_rsqrt);
 // docs/llvmpipe/ has the reading.
@@ -46,10 +47,16 @@ ST_INLINE float fma(float a, float b, float c) { return std::fma(a, b, c); }
 ST_INLINE float floor(float x) { return std::floor(x); }
 ST_INLINE float sqrt(float x) { return std::sqrt(x); }
 ST_INLINE float abs(float x) { return std::fabs(x); }
-// The lanes' rule (simd/lanes.h), not std::fmax, which may return NaN for a
-// signalling NaN: one definition of max and min for both.
-ST_INLINE float max(float a, float b) { return a != a ? b : (a < b ? b : a); }
-ST_INLINE float min(float a, float b) { return a != a ? b : (b < a ? b : a); }
+// GLSL's max and min, as gallivm emits fmax and fmin (lp_build_max_ext's
+// default path): MAXPS(p, q) = p > q ? p : q, or p where q is NaN. So a
+// NaN in either operand gives the other, and a tie gives q: max(-0.0, 0.0)
+// is +0.0 and max(0.0, -0.0) is -0.0 (found by explore profile --seed 2026:
+// a back-lit sheet's irradiance, max(dot(n, l), 0.0) of a -0.0 dot, was
+// -0.0 in the twin and +0.0 in llvmpipe). Where NIR proves p is not NaN and
+// cannot prove it of q (a constant first), llvmpipe swaps the operands; a
+// twin writes the constant second, as every shader here does.
+ST_INLINE float max(float p, float q) { return q != q ? p : (p > q ? p : q); }
+ST_INLINE float min(float p, float q) { return q != q ? p : (p < q ? p : q); }
 // 2^i for an integral float i in [-126, 128]: the exponent field alone
 // (128 gives +inf's pattern).
 ST_INLINE float exponent_to_float(float i) {
@@ -62,10 +69,11 @@ using simd::abs;
 using simd::floor;
 using simd::fma;
 using simd::isnan;
-using simd::max;
-using simd::min;
 using simd::select;
 using simd::sqrt;
+// As scalar::max and min: a tie gives q, a NaN the other operand.
+ST_INLINE Float max(Float p, Float q) { return simd::select(q != q, p, simd::select(p > q, p, q)); }
+ST_INLINE Float min(Float p, Float q) { return simd::select(q != q, p, simd::select(p < q, p, q)); }
 ST_INLINE Float exponent_to_float(Float i) {
     return simd::bit_cast_float((simd::itrunc(i) + Int(127)) << 23);
 }
@@ -123,9 +131,9 @@ ST_INLINE Float abs(Float x) { return simd::abs(x); }
 ST_INLINE float floor(float x) { return std::floor(x); }   // lp_build_floor: roundps, exact
 ST_INLINE Float floor(Float x) { return simd::floor(x); }
 ST_INLINE float max(float a, float b) { return scalar::max(a, b); }
-ST_INLINE Float max(Float a, Float b) { return simd::max(a, b); }
+ST_INLINE Float max(Float a, Float b) { return lanes::max(a, b); }
 ST_INLINE float min(float a, float b) { return scalar::min(a, b); }
-ST_INLINE Float min(Float a, Float b) { return simd::min(a, b); }
+ST_INLINE Float min(Float a, Float b) { return lanes::min(a, b); }
 
 // Measured against llvmpipe (thin-slab scenes, bit for bit): the three
 // products are summed as x + (y + z), not left to right as fsum3 reads.

@@ -45,8 +45,30 @@ TEST(GlslMath, LanesGiveTheScalarBits) {
     same_bits([](Float x) { return glsl::inversesqrt(x); }, [](float x) { return glsl::inversesqrt(x); },
               "inversesqrt");
     same_bits([](Float x) { return glsl::max(x, Float(0.25f)); }, [](float x) { return glsl::max(x, 0.25f); }, "max");
+    same_bits([](Float x) { return glsl::min(Float(-0.0f), x); }, [](float x) { return glsl::min(-0.0f, x); }, "min");
     same_bits([](Float x) { return glsl::length(Vec3(x, x * Float(0.5f), Float(2.0f))); },
               [](float x) { return glsl::length(glm::vec3(x, x * 0.5f, 2.0f)); }, "length");
+}
+
+// gallivm's fmax/fmin (docs/llvmpipe/glsl-builtins.md 2.8): a tie gives the
+// second operand, one NaN the other operand. The twin gave -0.0 for
+// max(-0.0, 0.0) where llvmpipe gives +0.0 (explore profile --seed 2026).
+TEST(GlslMath, MaxAndMinAreGallivmsOnTiesAndNaN) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    auto bits = [](float x) { return std::bit_cast<uint32_t>(x); };
+    EXPECT_EQ(bits(glsl::max(-0.0f, 0.0f)), bits(0.0f));
+    EXPECT_EQ(bits(glsl::max(0.0f, -0.0f)), bits(-0.0f));
+    EXPECT_EQ(bits(glsl::min(0.0f, -0.0f)), bits(-0.0f));
+    EXPECT_EQ(bits(glsl::min(-0.0f, 0.0f)), bits(0.0f));
+    EXPECT_EQ(glsl::max(nan, 2.0f), 2.0f);
+    EXPECT_EQ(glsl::max(2.0f, nan), 2.0f);
+    EXPECT_EQ(glsl::min(nan, -2.0f), -2.0f);
+    EXPECT_EQ(glsl::min(-2.0f, nan), -2.0f);
+    const Float l = glsl::max(Float(-0.0f), Float(0.0f)), m = glsl::min(Float(nan), Float(3.0f));
+    for (int lane = 0; lane < kLanes; ++lane) {
+        EXPECT_EQ(bits(l[lane]), bits(0.0f));
+        EXPECT_EQ(m[lane], 3.0f);
+    }
 }
 
 TEST(GlslMath, IfElseTakesEachLanesSideAndSkipsAnUntakenOne) {
