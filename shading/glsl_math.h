@@ -29,6 +29,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
@@ -55,13 +56,16 @@ ST_INLINE float abs(float x) { return std::fabs(x); }
 // -0.0 in the twin and +0.0 in llvmpipe). Where NIR proves p is not NaN and
 // cannot prove it of q (a constant first), llvmpipe swaps the operands; a
 // twin writes the constant second, as every shader here does.
-ST_INLINE float max(float p, float q) { return q != q ? p : (p > q ? p : q); }
-ST_INLINE float min(float p, float q) { return q != q ? p : (p < q ? p : q); }
+ST_INLINE float max(float p, float q) { return q != q ? p : simd::maxss(p, q); }
+ST_INLINE float min(float p, float q) { return q != q ? p : simd::minss(p, q); }
 // 2^i for an integral float i in [-126, 128]: the exponent field alone
 // (128 gives +inf's pattern).
 ST_INLINE float exponent_to_float(float i) {
     return std::bit_cast<float>(uint32_t(int32_t(i) + 127) << 23);
 }
+ST_INLINE int32_t bits_of(float x) { return std::bit_cast<int32_t>(x); }
+ST_INLINE float from_bits(int32_t i) { return std::bit_cast<float>(i); }
+ST_INLINE float int_to_float(int32_t i) { return float(i); }
 }  // namespace scalar
 
 namespace lanes {
@@ -72,11 +76,14 @@ using simd::isnan;
 using simd::select;
 using simd::sqrt;
 // As scalar::max and min: a tie gives q, a NaN the other operand.
-ST_INLINE Float max(Float p, Float q) { return simd::select(q != q, p, simd::select(p > q, p, q)); }
-ST_INLINE Float min(Float p, Float q) { return simd::select(q != q, p, simd::select(p < q, p, q)); }
+ST_INLINE Float max(Float p, Float q) { return simd::select(q != q, p, simd::maxps(p, q)); }
+ST_INLINE Float min(Float p, Float q) { return simd::select(q != q, p, simd::minps(p, q)); }
 ST_INLINE Float exponent_to_float(Float i) {
     return simd::bit_cast_float((simd::itrunc(i) + Int(127)) << 23);
 }
+ST_INLINE Int bits_of(Float x) { return simd::bit_cast_int(x); }
+ST_INLINE Float from_bits(Int i) { return simd::bit_cast_float(i); }
+ST_INLINE Float int_to_float(Int i) { return simd::to_float(i); }
 }  // namespace lanes
 
 namespace detail {
@@ -113,6 +120,46 @@ template <class F> ST_INLINE F exp2(F x) {
     return select(nan, x, r);  // NaN passes through
 }
 
+// log2 of m in [1, 2) as y P(y^2), y = (m - 1) / (m + 1): the coefficients
+// of lp_build_log2_approx (LOG_POLY_DEGREE 4), as floats.
+inline constexpr uint32_t kLog2Poly[5] = {0x4038AA3B, 0x3F7637F9, 0x3F13D321, 0x3ECE8316, 0x3ED03D59};
+template <class F> ST_INLINE F log2_coefficient(int k) { return F(std::bit_cast<float>(kLog2Poly[k])); }
+
+// log2(x) as lp_build_log2_safe (docs/llvmpipe/glsl-builtins.md 1.3): the
+// exponent E and the mantissa m of x's bits, y = (m - 1) / (m + 1), the
+// polynomial in z = y^2 with its even and odd terms apart and every
+// multiply-add fused, then y P + E, fused. No re-centring about sqrt 2, so
+// just below 1 the relative error is large, as in llvmpipe. The edges are
+// unordered compares, in this order: x >= inf gives +inf, x == 0 gives -inf
+// (denormals too, under DAZ), x < 0 gives NaN; a NaN takes all three and
+// comes out as 0x7FC00000, its payload lost.
+template <class F> ST_INLINE F log2(F x) {
+    using I = decltype(bits_of(x));
+    const I i = bits_of(x);
+    const F e = int_to_float(((i & I(0x7F800000)) >> 23) - I(127));
+    const F m = from_bits((i & I(0x007FFFFF)) | I(0x3F800000));
+    const F y = (m - F(1.0f)) / (m + F(1.0f));
+    const F z = y * y;
+    const F z2 = z * z;
+    const F even = fma(z2, fma(z2, log2_coefficient<F>(4), log2_coefficient<F>(2)), log2_coefficient<F>(0));
+    const F odd = fma(z2, log2_coefficient<F>(3), log2_coefficient<F>(1));
+    const F p = fma(odd, z, even);
+    F r = fma(y, p, e);
+    const F inf = F(std::numeric_limits<float>::infinity());
+    r = select(!(x < inf), inf, r);                          // UGE(x, +inf)
+    r = select((x == F(0.0f)) || isnan(x), -inf, r);         // UEQ(x, 0)
+    r = select(!(x >= F(0.0f)), F(from_bits(0x7FC00000)), r);  // ULT(x, 0)
+    return r;
+}
+
+// pow(x, y) as lp_build_pow: exp2(log2(x) * y), then +0 where x == 0
+// (unordered: NaN x too). So pow(NaN, y) and pow(0, y <= 0) are +0, and a
+// negative x gives NaN even for an integral y (glsl-builtins.md 1.5).
+template <class F> ST_INLINE F pow(F x, F y) {
+    const F r = exp2(log2(x) * y);
+    return select((x == F(0.0f)) || isnan(x), F(0.0f), r);
+}
+
 }  // namespace detail
 
 ST_INLINE float exp2(float x) { return detail::exp2(x); }
@@ -122,6 +169,18 @@ ST_INLINE Float exp2(Float x) { return detail::exp2(x); }
 inline constexpr float kLog2e = float(1.44269504088896340736);
 ST_INLINE float exp(float x) { return exp2(x * kLog2e); }
 ST_INLINE Float exp(Float x) { return exp2(x * Float(kLog2e)); }
+
+ST_INLINE float log2(float x) { return detail::log2(x); }
+ST_INLINE Float log2(Float x) { return detail::log2(x); }
+// log(x) = log2(x) * fl(ln 2) (glsl_to_nir: flog2, then one multiply).
+inline constexpr float kLn2 = float(0.69314718055994530942);
+ST_INLINE float log(float x) { return log2(x) * kLn2; }
+ST_INLINE Float log(Float x) { return log2(x) * Float(kLn2); }
+// pow(x, y) (lp_build_pow). A constant y of 1, 2 or 4 and a constant x of 1
+// or 2 are rewritten by the compiler first (x, x*x, (x*x)*(x*x), 1,
+// exp2(y)): a twin writes what the compiler leaves.
+ST_INLINE float pow(float x, float y) { return detail::pow(x, y); }
+ST_INLINE Float pow(Float x, Float y) { return detail::pow(x, y); }
 
 ST_INLINE float inversesqrt(float x) { return 1.0f / std::sqrt(x); }
 ST_INLINE Float inversesqrt(Float x) { return Float(1.0f) / simd::sqrt(x); }

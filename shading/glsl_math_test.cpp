@@ -4,6 +4,7 @@
 #include "shading/glsl_math.h"
 
 #include <bit>
+#include <cmath>
 #include <limits>
 #include <random>
 #include <vector>
@@ -46,6 +47,10 @@ TEST(GlslMath, LanesGiveTheScalarBits) {
               "inversesqrt");
     same_bits([](Float x) { return glsl::max(x, Float(0.25f)); }, [](float x) { return glsl::max(x, 0.25f); }, "max");
     same_bits([](Float x) { return glsl::min(Float(-0.0f), x); }, [](float x) { return glsl::min(-0.0f, x); }, "min");
+    same_bits([](Float x) { return glsl::log2(x); }, [](float x) { return glsl::log2(x); }, "log2");
+    same_bits([](Float x) { return glsl::log(x); }, [](float x) { return glsl::log(x); }, "log");
+    same_bits([](Float x) { return glsl::pow(glsl::abs(x), Float(2.5f)); },
+              [](float x) { return glsl::pow(glsl::abs(x), 2.5f); }, "pow");
     same_bits([](Float x) { return glsl::length(Vec3(x, x * Float(0.5f), Float(2.0f))); },
               [](float x) { return glsl::length(glm::vec3(x, x * 0.5f, 2.0f)); }, "length");
 }
@@ -69,6 +74,28 @@ TEST(GlslMath, MaxAndMinAreGallivmsOnTiesAndNaN) {
         EXPECT_EQ(bits(l[lane]), bits(0.0f));
         EXPECT_EQ(m[lane], 3.0f);
     }
+}
+
+// log2 and pow at their edges, as lp_build_log2_safe and lp_build_pow give
+// them (docs/llvmpipe/glsl-builtins.md 1.3, 1.5); the conformance scene
+// compares them with llvmpipe itself.
+TEST(GlslMath, Log2AndPowEdgesAreGallivms) {
+    const float inf = std::numeric_limits<float>::infinity(), nan = std::numeric_limits<float>::quiet_NaN();
+    auto bits = [](float x) { return std::bit_cast<uint32_t>(x); };
+    EXPECT_EQ(glsl::log2(1.0f), 0.0f);
+    EXPECT_EQ(glsl::log2(8.0f), 3.0f);
+    EXPECT_EQ(glsl::log2(0.125f), -3.0f);
+    EXPECT_EQ(glsl::log2(0.0f), -inf);
+    EXPECT_EQ(glsl::log2(-0.0f), -inf);
+    EXPECT_EQ(glsl::log2(inf), inf);
+    EXPECT_EQ(bits(glsl::log2(-1.0f)), 0x7FC00000u);
+    EXPECT_EQ(bits(glsl::log2(-nan)), 0x7FC00000u);  // the payload and sign are lost
+    EXPECT_NEAR(glsl::log2(3.0f), 1.5849625f, 2e-7f);
+    EXPECT_EQ(bits(glsl::pow(nan, 1.0f)), bits(0.0f));
+    EXPECT_EQ(bits(glsl::pow(0.0f, -1.0f)), bits(0.0f));
+    EXPECT_EQ(bits(glsl::pow(-0.0f, 3.0f)), bits(0.0f));
+    EXPECT_TRUE(std::isnan(glsl::pow(-8.0f, 2.0f)));
+    EXPECT_EQ(glsl::pow(5.0f, 0.0f), 1.0f);
 }
 
 TEST(GlslMath, IfElseTakesEachLanesSideAndSkipsAnUntakenOne) {

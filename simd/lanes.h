@@ -212,6 +212,56 @@ ST_INLINE Float sqrt(Float x) {
     return r;
 }
 
+// The x86 MAXPS and MINPS rule, which gallivm's fmax and fmin build on:
+// p > q ? p : q (p < q ? p : q for min), so a tie or a NaN gives q. Written
+// as the instructions, not as selects: a compiler may turn the select into
+// maxnum, whose tie is either operand (clang -O3 gave min(-0.0, +0.0) as
+// -0.0 for one float and +0.0 for lanes). The one-float forms are inline
+// assembly because GCC 12 folds _mm_max_ss of constants wrongly
+// (_mm_max_ss(NaN, 2) to NaN).
+ST_INLINE float maxss(float p, float q) {
+    float r;
+#if defined(__AVX__)
+    __asm__("vmaxss %2, %1, %0" : "=x"(r) : "x"(p), "x"(q));
+#else
+    r = p;
+    __asm__("maxss %1, %0" : "+x"(r) : "x"(q));
+#endif
+    return r;
+}
+ST_INLINE float minss(float p, float q) {
+    float r;
+#if defined(__AVX__)
+    __asm__("vminss %2, %1, %0" : "=x"(r) : "x"(p), "x"(q));
+#else
+    r = p;
+    __asm__("minss %1, %0" : "+x"(r) : "x"(q));
+#endif
+    return r;
+}
+ST_INLINE Float maxps(Float p, Float q) {
+#if defined(ST_SIMD_AVX512)
+    return Float(FloatV(_mm512_max_ps(__m512(p.v), __m512(q.v))));
+#elif defined(ST_SIMD_AVX2)
+    return Float(FloatV(_mm256_max_ps(__m256(p.v), __m256(q.v))));
+#else
+    Float r;
+    for (int i = 0; i < kLanes; ++i) r.v[i] = maxss(p.v[i], q.v[i]);
+    return r;
+#endif
+}
+ST_INLINE Float minps(Float p, Float q) {
+#if defined(ST_SIMD_AVX512)
+    return Float(FloatV(_mm512_min_ps(__m512(p.v), __m512(q.v))));
+#elif defined(ST_SIMD_AVX2)
+    return Float(FloatV(_mm256_min_ps(__m256(p.v), __m256(q.v))));
+#else
+    Float r;
+    for (int i = 0; i < kLanes; ++i) r.v[i] = minss(p.v[i], q.v[i]);
+    return r;
+#endif
+}
+
 // Round toward -infinity (roundps 1, as llvm.floor).
 ST_INLINE Float floor(Float x) {
 #if defined(ST_SIMD_AVX512)

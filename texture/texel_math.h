@@ -18,8 +18,8 @@ using simd::IntV;
 
 inline bool is_pot(int n) { return (n & (n - 1)) == 0; }
 
-// x86 maxps: a > b ? a : b, so a NaN in either operand gives b.
-ST_INLINE Float maxps(Float a, Float b) { return select(a > b, a, b); }
+// maxps (simd/lanes.h): a > b ? a : b, so a NaN in either operand gives b.
+using simd::maxps;
 
 // MIRRORED_REPEAT folds s into [0, 1] once, at the sample's centre
 // (lp_build_coord_mirror, posOnly): |2 (s/2 - rne(s/2))|, NaN -> 0.

@@ -68,6 +68,13 @@ private:
     float zero_ = 0.0f;
 };
 
+class BuiltinsExponentialFragment final : public FragmentProgram<BuiltinsExponentialFragment> {  // builtins_exponential.frag
+public:
+    void bind(const Bindings&) override {}
+    uint32_t inputs_read() const override { return 0; }
+    Vec4 main(const Fragment& frag) const;
+};
+
 class LoopBudgetFragment final : public FragmentProgram<LoopBudgetFragment> {  // loop_budget.frag
 public:
     void bind(const Bindings& b) override;
