@@ -171,23 +171,23 @@ using BVec3 = LaneVec<Mask, 3>;
 using BVec4 = LaneVec<Mask, 4>;
 
 namespace lane_vec_detail {
-// r[i] = f(a[i], b[i]) (or f(a[i])) for each component, in component order.
+// LaneVec<R, N>(f(a[0], b[0]), ...) (or f(a[i])): built in place from its
+// components, not default-constructed and then assigned, which left the
+// zeroing stores of Float() in the hot loops (a relief frame 13 % slower).
+template <class R, class T, int N, class F, int... I>
+ST_INLINE LaneVec<R, N> each(const LaneVec<T, N>& a, F f, std::integer_sequence<int, I...>) {
+    return LaneVec<R, N>(f(a.template component<I>())...);
+}
+template <class R, class T, int N, class F, int... I>
+ST_INLINE LaneVec<R, N> each(const LaneVec<T, N>& a, const LaneVec<T, N>& b, F f, std::integer_sequence<int, I...>) {
+    return LaneVec<R, N>(f(a.template component<I>(), b.template component<I>())...);
+}
 template <class R, class T, int N, class F> ST_INLINE LaneVec<R, N> each(const LaneVec<T, N>& a, F f) {
-    LaneVec<R, N> r;
-    for_each_index<N>([&](auto i) {
-        constexpr int k = decltype(i)::value;
-        r.template component<k>() = f(a.template component<k>());
-    });
-    return r;
+    return each<R>(a, f, std::make_integer_sequence<int, N>());
 }
 template <class R, class T, int N, class F>
 ST_INLINE LaneVec<R, N> each(const LaneVec<T, N>& a, const LaneVec<T, N>& b, F f) {
-    LaneVec<R, N> r;
-    for_each_index<N>([&](auto i) {
-        constexpr int k = decltype(i)::value;
-        r.template component<k>() = f(a.template component<k>(), b.template component<k>());
-    });
-    return r;
+    return each<R>(a, b, f, std::make_integer_sequence<int, N>());
 }
 }  // namespace lane_vec_detail
 
