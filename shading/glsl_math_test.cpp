@@ -96,6 +96,12 @@ TEST(GlslMath, Log2AndPowEdgesAreGallivms) {
     EXPECT_EQ(bits(glsl::pow(-0.0f, 3.0f)), bits(0.0f));
     EXPECT_TRUE(std::isnan(glsl::pow(-8.0f, 2.0f)));
     EXPECT_EQ(glsl::pow(5.0f, 0.0f), 1.0f);
+    // exp2 of a signalling NaN is its quiet NaN, as llvmpipe's arithmetic
+    // leaves it (volatile: no compile-time folding).
+    volatile uint32_t snan = 0xFF923457u;
+    const float x = std::bit_cast<float>(uint32_t(snan));
+    EXPECT_EQ(bits(glsl::exp2(x)), 0xFFD23457u);
+    EXPECT_EQ(std::bit_cast<uint32_t>(glsl::exp2(Float(x))[0]), 0xFFD23457u);
 }
 
 TEST(GlslMath, IfElseTakesEachLanesSideAndSkipsAnUntakenOne) {

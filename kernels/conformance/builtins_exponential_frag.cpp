@@ -20,7 +20,8 @@ Vec4 BuiltinsExponentialFragment::main(const Fragment& frag) const {
     for (int lane = 0; lane < kLanes; ++lane) mantissa.set(lane, kMantissas[which[lane]]);
     const Float x = simd::bit_cast_float((sign_bit << 31) | (exponent << 23) | mantissa);
     const Float y = simd::to_float((index >> 3) & 15) * 0.5f - 3.0f;
-    return Vec4(glsl::log2(x), glsl::log(x), glsl::pow(x, y), glsl::pow(glsl::abs(x), y));
+    if (group_ == 0) return Vec4(glsl::log2(x), glsl::log(x), glsl::pow(x, y), glsl::pow(glsl::abs(x), y));
+    return Vec4(glsl::exp2(x), glsl::exp(x), simd::sqrt(x), glsl::inversesqrt(x));
 }
 
 }  // namespace st

@@ -70,9 +70,12 @@ private:
 
 class BuiltinsExponentialFragment final : public FragmentProgram<BuiltinsExponentialFragment> {  // builtins_exponential.frag
 public:
-    void bind(const Bindings&) override {}
+    void bind(const Bindings& b) override { group_ = b.get_int("group"); }
     uint32_t inputs_read() const override { return 0; }
     Vec4 main(const Fragment& frag) const;
+
+private:
+    int group_ = 0;
 };
 
 class LoopBudgetFragment final : public FragmentProgram<LoopBudgetFragment> {  // loop_budget.frag
