@@ -11,7 +11,7 @@ namespace st {
 namespace {
 
 ST_INLINE Float at(const Plane& p, Float px, Float py) {
-    return simd::fma(Float(p.dady), py, simd::fma(Float(p.dadx), px, Float(p.a0)));
+    return simd::fmuladd(Float(p.dady), py, simd::fmuladd(Float(p.dadx), px, Float(p.a0)));
 }
 
 // Each lane's pixel offset inside its block, as floats (exact), for every

@@ -15,7 +15,7 @@ namespace st {
 // RGBA32F target: dst = src * sfactor + dst * dfactor, each product rounded
 // and then summed, 1 - As rounded on its own. Measured against llvmpipe:
 // the triangles-alpha-blend and triangles-large scenes are bit-identical
-// with this form and differ with the lerp form fma(As, src - dst, dst) that
+// with this form and differ with the lerp form fmuladd(As, src - dst, dst) that
 // a reading of lp_bld_blend.c suggested (docs/llvmpipe/). Written once for
 // one pixel (glm::vec4) and for lanes (Vec4).
 // glBlendFuncSeparate with GL_FUNC_ADD on a float target, as llvmpipe's

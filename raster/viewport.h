@@ -3,7 +3,7 @@
 //
 // Measured (../shared/notes/llvmpipe.md, "Rasterization rules"):
 // 1/w is a correctly rounded division, x_ndc = x_clip * (1/w) is rounded,
-// and x_win = fma(x_ndc, width/2, x0 + width/2) with one rounding.
+// and x_win = fmuladd(x_ndc, width/2, x0 + width/2) with one rounding.
 #pragma once
 
 #include <glm/vec4.hpp>

@@ -160,6 +160,12 @@ template <class T> struct LaneVec<T, 4> {
 
 #undef ST_LANE_VEC_COMMON
 
+// GLSL's scalar constructors that convert: float(i), float(b), int(x),
+// int(b), bool(x), bool(i), with the rules above.
+template <class T> ST_INLINE Float float_of(T v) { return lane_vec_detail::Convert<Float>::from(v); }
+template <class T> ST_INLINE Int int_of(T v) { return lane_vec_detail::Convert<Int>::from(v); }
+template <class T> ST_INLINE Mask bool_of(T v) { return lane_vec_detail::Convert<Mask>::from(v); }
+
 using Vec2 = LaneVec<Float, 2>;
 using Vec3 = LaneVec<Float, 3>;
 using Vec4 = LaneVec<Float, 4>;

@@ -152,6 +152,8 @@ ST_INLINE Int operator<<(Int a, int n) {
 ST_INLINE Int operator>>(Int a, int n) { return Int(a.v >> n); }  // arithmetic
 ST_INLINE Mask operator<(Int a, Int b) { return Mask(a.v < b.v); }
 ST_INLINE Mask operator>(Int a, Int b) { return Mask(a.v > b.v); }
+ST_INLINE Mask operator<=(Int a, Int b) { return Mask(a.v <= b.v); }
+ST_INLINE Mask operator>=(Int a, Int b) { return Mask(a.v >= b.v); }
 ST_INLINE Mask operator==(Int a, Int b) { return Mask(a.v == b.v); }
 ST_INLINE Mask operator!=(Int a, Int b) { return Mask(a.v != b.v); }
 
@@ -194,7 +196,7 @@ ST_INLINE Int bit_cast_int(Float x) { return Int(IntV(x.v)); }
 ST_INLINE Float bit_cast_float(Int x) { return Float(FloatV(x.v)); }
 
 // Fused multiply-add, one rounding: llvmpipe's lp_build_mad on an FMA host.
-ST_INLINE Float fma(Float a, Float b, Float c) {
+ST_INLINE Float fmuladd(Float a, Float b, Float c) {
 #if defined(ST_SIMD_AVX512)
     return Float(FloatV(_mm512_fmadd_ps(__m512(a.v), __m512(b.v), __m512(c.v))));
 #elif defined(ST_SIMD_AVX2)
@@ -262,6 +264,24 @@ ST_INLINE Float minps(Float p, Float q) {
 #endif
 }
 
+// A denormal as the signed zero DAZ reads it as.
+ST_INLINE float denormal_as_zero(float x) {
+    const uint32_t b = __builtin_bit_cast(uint32_t, x);
+    return (b & 0x7F800000u) == 0 ? __builtin_bit_cast(float, b & 0x80000000u) : x;
+}
+
+// A C library rounding function (floorf, ...) made to answer as roundps
+// does in the shading threads: roundps quiets a signalling NaN and, under
+// their DAZ (raster/float_env.h), rounds a denormal as +-0, so
+// floor(-denormal) is -0.0; a C library may be integer code that passes an
+// sNaN through and sees the denormal. For the portable forms below and the
+// one-float built-ins.
+template <class Fn> ST_INLINE float like_roundps(float x, Fn round) {
+    const uint32_t b = __builtin_bit_cast(uint32_t, x);
+    if ((b & 0x7F800000u) == 0x7F800000u && (b & 0x007FFFFFu) != 0) return __builtin_bit_cast(float, b | 0x00400000u);
+    return round(denormal_as_zero(x));
+}
+
 // Round toward -infinity (roundps 1, as llvm.floor).
 ST_INLINE Float floor(Float x) {
 #if defined(ST_SIMD_AVX512)
@@ -270,7 +290,32 @@ ST_INLINE Float floor(Float x) {
     return Float(FloatV(_mm256_round_ps(__m256(x.v), _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC)));
 #else
     Float r;
-    for (int i = 0; i < kLanes; ++i) r.v[i] = __builtin_floorf(x.v[i]);
+    for (int i = 0; i < kLanes; ++i) r.v[i] = like_roundps(x.v[i], [](float v) { return __builtin_floorf(v); });
+    return r;
+#endif
+}
+
+// Round toward +infinity and toward zero (roundps 2 and 3, as llvm.ceil and
+// llvm.trunc), exact as floor is.
+ST_INLINE Float ceil(Float x) {
+#if defined(ST_SIMD_AVX512)
+    return Float(FloatV(_mm512_roundscale_ps(__m512(x.v), _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC)));
+#elif defined(ST_SIMD_AVX2)
+    return Float(FloatV(_mm256_round_ps(__m256(x.v), _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC)));
+#else
+    Float r;
+    for (int i = 0; i < kLanes; ++i) r.v[i] = like_roundps(x.v[i], [](float v) { return __builtin_ceilf(v); });
+    return r;
+#endif
+}
+ST_INLINE Float trunc(Float x) {
+#if defined(ST_SIMD_AVX512)
+    return Float(FloatV(_mm512_roundscale_ps(__m512(x.v), _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC)));
+#elif defined(ST_SIMD_AVX2)
+    return Float(FloatV(_mm256_round_ps(__m256(x.v), _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC)));
+#else
+    Float r;
+    for (int i = 0; i < kLanes; ++i) r.v[i] = like_roundps(x.v[i], [](float v) { return __builtin_truncf(v); });
     return r;
 #endif
 }
@@ -285,21 +330,21 @@ ST_INLINE Float round_even(Float x) {
     return Float(FloatV(_mm256_round_ps(__m256(x.v), _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC)));
 #else
     Float r;
-    for (int i = 0; i < kLanes; ++i) r.v[i] = __builtin_roundevenf(x.v[i]);
+    for (int i = 0; i < kLanes; ++i) r.v[i] = like_roundps(x.v[i], [](float v) { return __builtin_roundevenf(v); });
     return r;
 #endif
 }
 
 ST_INLINE Float abs(Float x) { return bit_cast_float(bit_cast_int(x) & Int(0x7fffffff)); }
 
-// A NaN operand yields the other operand (std::fmax's rule for quiet NaNs,
-// here for signalling ones too); otherwise the larger (smaller), the first
-// on a tie.
-ST_INLINE Float max(Float a, Float b) {
+// C's fmax and fmin: a NaN operand yields the other operand (for
+// signalling NaNs too); otherwise the larger (smaller), the first on a tie.
+// Not GLSL's max and min, whose tie gives the second (glsl::max).
+ST_INLINE Float fmax(Float a, Float b) {
     const Float larger = select(a < b, b, a);  // NaN in a or b: a
     return select(a != a, b, larger);
 }
-ST_INLINE Float min(Float a, Float b) {
+ST_INLINE Float fmin(Float a, Float b) {
     const Float smaller = select(b < a, b, a);
     return select(a != a, b, smaller);
 }

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <xmmintrin.h>
 
 namespace st::simd {
 
@@ -67,8 +68,8 @@ TEST(Lanes, ArithmeticIsTheScalarsLaneByLane) {
     std::rotate(u.begin(), u.begin() + 5, u.end());
     for (size_t i = 0; i + kLanes <= v.size(); i += kLanes) {
         const Float a = Float::load(&v[i]), b = Float::load(&w[i]), c = Float::load(&u[i]);
-        const Float sum = a + b, product = a * b, quotient = a / b, fused = fma(a, b, c);
-        const Float larger = max(a, b), smaller = min(a, b);
+        const Float sum = a + b, product = a * b, quotient = a / b, fused = fmuladd(a, b, c);
+        const Float larger = fmax(a, b), smaller = fmin(a, b);
         for (int lane = 0; lane < kLanes; ++lane) {
             const float x = v[i + size_t(lane)], y = w[i + size_t(lane)], z = u[i + size_t(lane)];
             ASSERT_EQ(bits_of(sum[lane]), bits_of(x + y));
@@ -86,15 +87,29 @@ TEST(Lanes, ArithmeticIsTheScalarsLaneByLane) {
 }
 
 TEST(Lanes, RoundingAndConversionsAreDefinedForEveryInput) {
+    // In the shading threads' environment (raster/float_env.h): flush to
+    // zero and denormals are zero, so roundps rounds a denormal as +-0 and
+    // the portable forms must too (floor(-denormal) is -0.0, not -1).
+    const unsigned saved_csr = _mm_getcsr();
+    _mm_setcsr(saved_csr | 0x8040u);
     const std::vector<float> v = awkward_floats();
     expect_lanewise(v, [](Float x) { return sqrt(x); }, [](float x) { return std::sqrt(x); }, "sqrt");
-    expect_lanewise(v, [](Float x) { return floor(x); }, [](float x) { return std::floor(x); }, "floor");
+    // roundps quiets a signalling NaN, as the x86 arithmetic does.
+    const auto daz = [](float x) {
+        const uint32_t b = std::bit_cast<uint32_t>(x);
+        return std::isnan(x) ? std::bit_cast<float>(b | 0x00400000u) : denormal_as_zero(x);
+    };
+    expect_lanewise(v, [](Float x) { return floor(x); }, [&](float x) { return std::floor(daz(x)); }, "floor");
+    expect_lanewise(v, [](Float x) { return ceil(x); }, [&](float x) { return std::ceil(daz(x)); }, "ceil");
+    expect_lanewise(v, [](Float x) { return trunc(x); }, [&](float x) { return std::trunc(daz(x)); }, "trunc");
     // In float, so beyond 2^31 a value comes back as it is (the mirror wrap
     // of a huge texture coordinate relies on it).
-    expect_lanewise(v, [](Float x) { return round_even(x); }, [](float x) { return std::nearbyint(x); }, "round_even");
+    expect_lanewise(v, [](Float x) { return round_even(x); }, [&](float x) { return std::nearbyint(daz(x)); },
+                    "round_even");
     expect_lanewise(v, [](Float x) { return abs(x); }, [](float x) { return std::fabs(x); }, "abs");
     expect_lanewise(v, [](Float x) { return itrunc(x); }, x86_trunc, "itrunc");
     expect_lanewise(v, [](Float x) { return iround(x); }, x86_round, "iround");
+    _mm_setcsr(saved_csr);
 }
 
 TEST(Lanes, MasksAndBits) {

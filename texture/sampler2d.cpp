@@ -378,7 +378,7 @@ Vec4 Sampler2D::filter_levels(const Vec2& st, const LevelChoice& c, TextureFilte
 }
 
 // C0 blended with level1's result in the lanes of `blend`:
-// fma(max(fpart, 0), C1 - C0, C0).
+// fmuladd(max(fpart, 0), C1 - C0, C0).
 Vec4 Sampler2D::blend_second_level(const Vec2& st, const LevelChoice& c, TextureFilter filter, Mask as_nearest,
                                    Mask blend, const Vec4& c0) const {
     if (none(blend)) return c0;

@@ -10,7 +10,7 @@
 
 namespace st::texel {
 
-using simd::fma;
+using simd::fmuladd;
 using simd::floor;
 using simd::iround;
 using simd::itrunc;
@@ -121,8 +121,8 @@ ST_INLINE Int lerp8_pairs(Int w, Int v0, Int v1) {
     return (v0 + (rounded & Int(0x00ff00ff))) & Int(0x00ff00ff);
 }
 
-// Float lerp: fma(t, v1 - v0, v0), as lp_build_mad fuses it.
-ST_INLINE Float lerp_float(Float t, Float v0, Float v1) { return fma(t, v1 - v0, v0); }
+// Float lerp: fmuladd(t, v1 - v0, v0), as lp_build_mad fuses it.
+ST_INLINE Float lerp_float(Float t, Float v0, Float v1) { return fmuladd(t, v1 - v0, v0); }
 
 // The nearest texel along one axis (lp_build_sample_wrap_nearest, and
 // wrap_nearest_int on the AoS path, which selects the same texel). Every
@@ -207,11 +207,11 @@ ST_INLINE Vec4 gather_texels(bool rgba8, const int32_t* bytes, const float* floa
     return Vec4(channel(0), channel(1), channel(2), channel(3));
 }
 
-// The two trilinear blends (§2.8). Float: fma(max(fpart, 0), C1 - C0, C0)
+// The two trilinear blends (§2.8). Float: fmuladd(max(fpart, 0), C1 - C0, C0)
 // in the lanes of `blend`, C0 elsewhere. 8-bit: lerp8 of the byte pairs with
 // the weight trunc(fpart * 256).
 ST_INLINE Vec4 blend_levels(Float fpart, const Vec4& c0, const Vec4& c1, Mask blend) {
-    const Float f = simd::max(fpart, Float(0.0f));
+    const Float f = simd::fmax(fpart, Float(0.0f));
     return select(blend, Vec4(lerp_float(f, c0.x, c1.x), lerp_float(f, c0.y, c1.y), lerp_float(f, c0.z, c1.z),
                               lerp_float(f, c0.w, c1.w)),
                   c0);

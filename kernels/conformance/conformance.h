@@ -68,14 +68,30 @@ private:
     float zero_ = 0.0f;
 };
 
-class BuiltinsExponentialFragment final : public FragmentProgram<BuiltinsExponentialFragment> {  // builtins_exponential.frag
+// A built-in family's program: the uniform `group` picks which functions
+// it writes (one scene each), and its inputs come from the pixel alone.
+template <class Derived> class BuiltinsFragment : public FragmentProgram<Derived> {
 public:
     void bind(const Bindings& b) override { group_ = b.get_int("group"); }
     uint32_t inputs_read() const override { return 0; }
-    Vec4 main(const Fragment& frag) const;
 
-private:
+protected:
     int group_ = 0;
+};
+
+class BuiltinsExponentialFragment final : public BuiltinsFragment<BuiltinsExponentialFragment> {  // builtins_exponential.frag
+public:
+    Vec4 main(const Fragment& frag) const;
+};
+
+class BuiltinsCommonFragment final : public BuiltinsFragment<BuiltinsCommonFragment> {  // builtins_common.frag
+public:
+    Vec4 main(const Fragment& frag) const;
+};
+
+class BuiltinsTrigonometryFragment final : public BuiltinsFragment<BuiltinsTrigonometryFragment> {  // builtins_trigonometry.frag
+public:
+    Vec4 main(const Fragment& frag) const;
 };
 
 class LoopBudgetFragment final : public FragmentProgram<LoopBudgetFragment> {  // loop_budget.frag

@@ -1,0 +1,39 @@
+// builtin_inputs.h: the inputs the built-in families' programs
+// (glsl/conformance/builtins_*.frag) enumerate, as their twins read them:
+// the same tables and the same lines as the GLSL's `mantissas`, `edges` and
+// the x built from the pixel's index.
+#pragma once
+
+#include <cstdint>
+
+#include "shading/glsl_math.h"
+
+namespace st::builtin_inputs {
+
+inline constexpr int32_t kMantissas[8] = {0, 1, 0x400000, 0x7FFFFF, 0x2AAAAA, 0x555555, 0x123457, 0x7FFFFE};
+// 0, -0, 1, -1, 0.5, 2.5, -3.75, 1e-30, -1e30, 3e38, inf, -inf, NaN, a
+// denormal, 0.1, 7.
+inline constexpr int32_t kEdges[16] = {0x00000000, INT32_MIN,  0x3F800000,          int32_t(0xBF800000),
+                                       0x3F000000, 0x40200000, int32_t(0xC0700000), 0x0DA24260,
+                                       int32_t(0xF149F2CA), 0x7F61B1E6, 0x7F800000, int32_t(0xFF800000),
+                                       0x7FC00000, 0x00400000, 0x3DCCCCCD,          0x40E00000};
+
+// The pixel's index in a 64-wide image (GLSL: p.y * 64 + p.x).
+inline Int pixel_index(const Fragment& frag) {
+    const IVec2 p(frag.frag_coord().xy());
+    return p.y * 64 + p.x;
+}
+
+// x from the index's bits: the sign from bit 0, the exponent from bits 1-8,
+// a mantissa pattern from bits 9-11.
+inline Float from_bits_of(Int index) {
+    const Int sign_bit = index & 1;
+    const Int exponent = (index >> 1) & 255;
+    const Int mantissa = glsl::element(kMantissas, (index >> 9) & 7);
+    return glsl::intBitsToFloat((sign_bit << 31) | (exponent << 23) | mantissa);
+}
+
+// edges[(index ^ (index >> 4) ^ (index >> 8)) & 15], the second operand.
+inline Float edge_of(Int index) { return glsl::intBitsToFloat(glsl::element(kEdges, (index ^ (index >> 4) ^ (index >> 8)) & 15)); }
+
+}  // namespace st::builtin_inputs

@@ -1,0 +1,221 @@
+// common.h: GLSL's common built-ins (abs, sign, floor, trunc, round,
+// roundEven, ceil, fract, mod, modf, min, max, clamp, mix, step,
+// smoothstep, isnan, isinf, the bit casts, fma, frexp, ldexp) as llvmpipe
+// computes them, bit for bit (docs/llvmpipe/glsl-builtins.md, section 2;
+// proved by the scenes conformance-builtins-common-*).
+//
+// Where llvmpipe is not what a reader expects:
+// - sign(-0.0) and sign(NaN) are +0.0 (an unordered compare with zero).
+// - round() is roundEven(): GLSL allows either, Mesa picks one.
+// - fract(x) is x - floor(x) with no clamp below 1: fract(-1e-10) is 1.0.
+// - mod(x, y) is x - y * floor(x / y), four roundings.
+// - min and max give the second operand on a tie and the other operand
+//   where one is NaN (primitives.h); clamp(x, lo, hi) is min(max(x, lo), hi).
+// - mix(x, y, t) has three forms, which NIR picks from the shader around
+//   it (nir_lower_flrp): see mix below.
+// - fma(a, b, c) is not fused: a * b rounded, then + c rounded.
+// - frexp and ldexp are integer code on the bits; a denormal counts as 0.
+#pragma once
+
+#include <limits>
+
+#include "shading/builtins/componentwise.h"
+#include "shading/builtins/primitives.h"
+
+namespace st::glsl {
+
+namespace detail {
+
+// lp_build_sgn: +-1.0 carrying x's sign bit, then +0.0 where x == 0
+// (unordered, so NaN too; a denormal is 0 under DAZ).
+template <class F> ST_INLINE F sign(F x) {
+    using I = decltype(bits_of(x));
+    const F r = from_bits((bits_of(x) & I(INT32_MIN)) | I(0x3F800000));
+    return select((x == F(0.0f)) || isnan(x), F(0.0f), r);
+}
+
+// x - y * floor(x / y): lower_fmod, four plain roundings.
+template <class F> ST_INLINE F mod(F x, F y) {
+    const F q = x / y;
+    const F f = floor(q);
+    const F p = y * f;
+    return x - p;
+}
+
+// t = (x - e0) / (e1 - e0) saturated, then t * (t * (3 - 2 t)) grouped as
+// Mesa's built-in writes it, not (t * t) * (3 - 2 t).
+template <class F> ST_INLINE F smoothstep(F e0, F e1, F x) {
+    const F q = (x - e0) / (e1 - e0);
+    const F t = detail::min(detail::max(q, F(0.0f)), F(1.0f));
+    return t * (t * (F(3.0f) - F(2.0f) * t));
+}
+
+// frexp as GLSL IR builds it for floats (builtin_functions.cpp): integer
+// code on x's bits. Zero and (under DAZ) denormals give themselves and
+// exponent 0; infinities and NaN give exponent 129 and a mantissa in
+// [0.5, 1) with their sign.
+template <class F, class I> ST_INLINE F frexp(F x, I& e) {
+    const auto nonzero = !(abs(x) == F(0.0f));  // unordered: NaN counts
+    e = wrapping_add(bits_of(abs(x)) >> 23, select(nonzero, I(-126), I(0)));
+    return from_bits((bits_of(x) & I(int32_t(0x807FFFFF))) | select(nonzero, I(0x3F000000), I(0)));
+}
+
+// ldexp as GLSL IR's LDEXP_TO_ARITH lowers it (llvmpipe has no native
+// ldexp): the exponent field moved by e and clamped, integer code only. A
+// normal result is exact; below 2^-126 gives +-0, above the range +-inf;
+// infinities and NaN come back as they are.
+template <class F, class I> ST_INLINE F ldexp(F x, I e) {
+    const I be = bits_of(abs(x)) >> 23;
+    I re = imin(wrapping_add(be, e), I(255));
+    I sm = bits_of(x) & I(int32_t(0x807FFFFF));
+    const auto flush = imin(re, be) <= I(0);
+    re = select(flush, I(0), re);
+    sm = select(flush || (re == I(255)), sm & I(INT32_MIN), sm);
+    const F r = from_bits(sm | shift_left(re, 23));
+    return select(be >= I(255), x, r);
+}
+
+}  // namespace detail
+
+// abs clears the sign bit (llvm.fabs): NaN keeps its payload.
+ST_INLINE float abs(float x) { return scalar::abs(x); }
+using simd::abs;  // Float: the same function, so a twin's unqualified call is not ambiguous
+ST_GLSL_COMPONENTWISE_1(abs)
+
+ST_INLINE float sign(float x) { return detail::sign(x); }
+ST_INLINE Float sign(Float x) { return detail::sign(x); }
+ST_GLSL_COMPONENTWISE_1(sign)
+
+// floor, ceil, trunc: roundps, exact. round and roundEven are both
+// fround_even (roundps 0): ties go to even, round(0.5) is 0.
+ST_INLINE float floor(float x) { return scalar::floor(x); }
+using simd::floor;  // Float: the same function, so a twin's unqualified call is not ambiguous
+ST_GLSL_COMPONENTWISE_1(floor)
+ST_INLINE float ceil(float x) { return scalar::ceil(x); }
+using simd::ceil;  // Float: the same function, so a twin's unqualified call is not ambiguous
+ST_GLSL_COMPONENTWISE_1(ceil)
+ST_INLINE float trunc(float x) { return scalar::trunc(x); }
+using simd::trunc;  // Float: the same function, so a twin's unqualified call is not ambiguous
+ST_GLSL_COMPONENTWISE_1(trunc)
+ST_INLINE float roundEven(float x) { return scalar::round_even(x); }
+ST_INLINE Float roundEven(Float x) { return lanes::round_even(x); }
+ST_GLSL_COMPONENTWISE_1(roundEven)
+ST_INLINE float round(float x) { return scalar::round_even(x); }
+ST_INLINE Float round(Float x) { return lanes::round_even(x); }
+ST_GLSL_COMPONENTWISE_1(round)
+
+// fract(x) = x - floor(x), one subtraction: 1.0 for tiny negative x, NaN
+// for infinities (not lp_build_fract_safe's clamp below 1).
+ST_INLINE float fract(float x) { return x - scalar::floor(x); }
+ST_INLINE Float fract(Float x) { return x - lanes::floor(x); }
+ST_GLSL_COMPONENTWISE_1(fract)
+
+ST_INLINE float mod(float x, float y) { return detail::mod(x, y); }
+ST_INLINE Float mod(Float x, Float y) { return detail::mod(x, y); }
+ST_GLSL_COMPONENTWISE_2(mod)
+
+// modf(x, i): i = trunc(x), returns x - i, so modf(-3.0) is +0.0.
+ST_INLINE float modf(float x, float& i) {
+    i = scalar::trunc(x);
+    return x - i;
+}
+ST_INLINE Float modf(Float x, Float& i) {
+    i = lanes::trunc(x);
+    return x - i;
+}
+template <int N> ST_INLINE LaneVec<Float, N> modf(const LaneVec<Float, N>& x, LaneVec<Float, N>& i) {
+    i = trunc(x);
+    return x - i;
+}
+
+ST_INLINE float max(float p, float q) { return scalar::max(p, q); }
+ST_INLINE Float max(Float p, Float q) { return lanes::max(p, q); }
+ST_GLSL_COMPONENTWISE_2(max)
+ST_INLINE float min(float p, float q) { return scalar::min(p, q); }
+ST_INLINE Float min(Float p, Float q) { return lanes::min(p, q); }
+ST_GLSL_COMPONENTWISE_2(min)
+
+// min(max(x, lo), hi): NaN x gives lo (then hi if lo > hi), and
+// clamp(-0.0, 0.0, 1.0) is +0.0.
+ST_INLINE float clamp(float x, float lo, float hi) { return scalar::min(scalar::max(x, lo), hi); }
+ST_INLINE Float clamp(Float x, Float lo, Float hi) { return lanes::min(lanes::max(x, lo), hi); }
+ST_GLSL_COMPONENTWISE_3(clamp)
+
+// mix(x, y, t) for float t is NIR's flrp, which nir_lower_flrp writes in
+// one of three forms, chosen from the shader around it (glsl-builtins.md
+// 2.13; docs/llvmpipe/compiler-rewrites.md says how to tell):
+// - mix: the fast form, x + t * (y - x). The usual case: t varies and no
+//   other mix in the shader shares x and t, or y and t. mix(x, y, 1.0) is
+//   not always y.
+// - mix_strict: x * (1 - t) + y * t, where t is a constant, where another
+//   mix shares (x, t) or (y, t) (mix(vec3(k), c, t) splits into three that
+//   share them), where y is +-1, or in a precise assignment.
+// - mix_from_one: x a constant 1.0, (1 - t) + y * t; mix_from_minus_one:
+//   x a constant -1.0, (-1 + t) + y * t.
+// Simplified first (and written so in a twin): t of 0 or 1, x == y, x or y
+// a constant 0 (y * t, x * (1 - t)).
+ST_INLINE float mix(float x, float y, float t) { return x + t * (y - x); }
+ST_INLINE Float mix(Float x, Float y, Float t) { return x + t * (y - x); }
+ST_GLSL_COMPONENTWISE_3(mix)
+ST_INLINE float mix_strict(float x, float y, float t) { return x * (1.0f - t) + y * t; }
+ST_INLINE Float mix_strict(Float x, Float y, Float t) { return x * (Float(1.0f) - t) + y * t; }
+ST_GLSL_COMPONENTWISE_3(mix_strict)
+ST_INLINE float mix_from_one(float y, float t) { return (1.0f - t) + y * t; }
+ST_INLINE Float mix_from_one(Float y, Float t) { return (Float(1.0f) - t) + y * t; }
+ST_GLSL_COMPONENTWISE_2(mix_from_one)
+ST_INLINE float mix_from_minus_one(float y, float t) { return (-1.0f + t) + y * t; }
+ST_INLINE Float mix_from_minus_one(Float y, Float t) { return (Float(-1.0f) + t) + y * t; }
+ST_GLSL_COMPONENTWISE_2(mix_from_minus_one)
+// mix(x, y, bvec a): each component y where a is true, else x; bits as
+// they are, NaN payloads too.
+ST_INLINE float mix(float x, float y, bool a) { return a ? y : x; }
+ST_INLINE Float mix(Float x, Float y, Mask a) { return lanes::select(a, y, x); }
+template <int N> ST_INLINE LaneVec<Float, N> mix(const LaneVec<Float, N>& x, const LaneVec<Float, N>& y, const LaneVec<Mask, N>& a) {
+    return [&]<int... I>(std::integer_sequence<int, I...>) {
+        return LaneVec<Float, N>(lanes::select(a.template component<I>(), y.template component<I>(), x.template component<I>())...);
+    }(std::make_integer_sequence<int, N>());
+}
+
+// step(edge, x): 1.0 where x >= edge (ordered: NaN in either gives 0.0).
+ST_INLINE float step(float edge, float x) { return x >= edge ? 1.0f : 0.0f; }
+ST_INLINE Float step(Float edge, Float x) { return lanes::select(x >= edge, Float(1.0f), Float(0.0f)); }
+ST_GLSL_COMPONENTWISE_2(step)
+
+ST_INLINE float smoothstep(float e0, float e1, float x) { return detail::smoothstep(e0, e1, x); }
+ST_INLINE Float smoothstep(Float e0, Float e1, Float x) { return detail::smoothstep(e0, e1, x); }
+ST_GLSL_COMPONENTWISE_3(smoothstep)
+
+// isnan(x) is x != x; isinf(x) is abs(x) == inf (ordered).
+ST_INLINE bool isnan(float x) { return x != x; }
+using simd::isnan;  // Float: x != x
+ST_GLSL_COMPONENTWISE_1(isnan)
+ST_INLINE bool isinf(float x) { return scalar::abs(x) == std::numeric_limits<float>::infinity(); }
+ST_INLINE Mask isinf(Float x) { return lanes::abs(x) == Float(std::numeric_limits<float>::infinity()); }
+ST_GLSL_COMPONENTWISE_1(isinf)
+
+// The bit casts move bits and nothing else: a signalling NaN or a denormal
+// comes through unchanged until arithmetic reads it.
+ST_INLINE int32_t floatBitsToInt(float x) { return scalar::bits_of(x); }
+ST_INLINE Int floatBitsToInt(Float x) { return lanes::bits_of(x); }
+ST_GLSL_COMPONENTWISE_1(floatBitsToInt)
+ST_INLINE float intBitsToFloat(int32_t i) { return scalar::from_bits(i); }
+ST_INLINE Float intBitsToFloat(Int i) { return lanes::from_bits(i); }
+template <int N> ST_INLINE LaneVec<Float, N> intBitsToFloat(const LaneVec<Int, N>& i) {
+    return [&]<int... I>(std::integer_sequence<int, I...>) {
+        return LaneVec<Float, N>(lanes::from_bits(i.template component<I>())...);
+    }(std::make_integer_sequence<int, N>());
+}
+
+// GLSL's fma(a, b, c) is not fused on llvmpipe (lower_ffma32 splits it):
+// a * b rounded, then + c. -ffp-contract=off keeps the compiler from
+// fusing it back.
+ST_INLINE float fma(float a, float b, float c) { return a * b + c; }
+ST_INLINE Float fma(Float a, Float b, Float c) { return a * b + c; }
+ST_GLSL_COMPONENTWISE_3(fma)
+
+ST_INLINE float frexp(float x, int32_t& e) { return detail::frexp(x, e); }
+ST_INLINE Float frexp(Float x, Int& e) { return detail::frexp(x, e); }
+ST_INLINE float ldexp(float x, int32_t e) { return detail::ldexp(x, e); }
+ST_INLINE Float ldexp(Float x, Int e) { return detail::ldexp(x, e); }
+
+}  // namespace st::glsl
