@@ -217,6 +217,30 @@ TEST(GlslMath, TrigonometryEdgesAreLlvmpipes) {
     EXPECT_EQ(bits(cosh(std::bit_cast<float>(0x7F923457u))), 0x7FD23457u);
 }
 
+// The geometric built-ins: lanes, glm and float forms agree, dot sums from
+// the last component back, and reflect doubles the dot first (llvmpipe's
+// order, which overflows where the written one does not).
+TEST(GlslMath, GeometricFormsAgreeAndKeepLlvmpipesOrder) {
+    const auto bits = [](float x) { return std::bit_cast<uint32_t>(x); };
+    const glm::vec4 a(1e-8f, 3.0f, -7.5f, 1.0f), b(1.0f, 1e8f, 0.25f, -1e8f);
+    EXPECT_EQ(bits(glsl::dot(a, b)), bits(((a.w * b.w + a.z * b.z) + a.y * b.y) + a.x * b.x));
+    const Vec4 la(a), lb(b);
+    EXPECT_EQ(bits(glsl::dot(la, lb)[0]), bits(glsl::dot(a, b)));
+    EXPECT_EQ(bits(glsl::length(Vec3(la))[0]), bits(glsl::length(glm::vec3(a))));
+    EXPECT_EQ(bits(glsl::normalize(Vec2(la.xy())).y[0]), bits(glsl::normalize(glm::vec2(a)).y));
+    EXPECT_EQ(glsl::normalize(-3.0f), -1.0f);  // a float's normalize is sign
+    EXPECT_EQ(glsl::distance(2.0f, 5.0f), 3.0f);
+    const glm::vec3 c = glsl::cross(glm::vec3(1, 0, 0), glm::vec3(0, 1, 0));
+    EXPECT_EQ(c, glm::vec3(0, 0, 1));
+    // dot(N, I) * 2 overflows: llvmpipe's order gives infinity.
+    const glm::vec3 r = glsl::reflect(glm::vec3(3e38f, 0.0f, 0.0f), glm::vec3(0.6f, 0.8f, 0.0f));
+    EXPECT_TRUE(std::isinf(r.y));
+    EXPECT_EQ(bits(glsl::reflect(Vec3(la.xyz()), Vec3(lb.xyz())).z[0]),
+              bits(glsl::reflect(glm::vec3(a), glm::vec3(b)).z));
+    EXPECT_EQ(glsl::faceforward(glm::vec2(1.0f), glm::vec2(1.0f), glm::vec2(1.0f)), glm::vec2(-1.0f));
+    EXPECT_EQ(glsl::refract(glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), 2.0f), glm::vec3(0.0f));  // total reflection
+}
+
 // gallivm's fmax/fmin (docs/llvmpipe/glsl-builtins.md 2.8): a tie gives the
 // second operand, one NaN the other operand. The twin gave -0.0 for
 // max(-0.0, 0.0) where llvmpipe gives +0.0 (explore profile --seed 2026).

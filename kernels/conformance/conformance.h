@@ -94,6 +94,11 @@ public:
     Vec4 main(const Fragment& frag) const;
 };
 
+class BuiltinsGeometricFragment final : public BuiltinsFragment<BuiltinsGeometricFragment> {  // builtins_geometric.frag
+public:
+    Vec4 main(const Fragment& frag) const;
+};
+
 class LoopBudgetFragment final : public FragmentProgram<LoopBudgetFragment> {  // loop_budget.frag
 public:
     void bind(const Bindings& b) override;
