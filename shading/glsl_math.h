@@ -12,6 +12,8 @@
 //   and the three forms of mix;
 // - geometric.h: dot, cross, length, normalize, reflect, refract;
 // - trigonometry.h: radians ... atanh, atan of one and two arguments;
+// - relational.h: lessThan ... notEqual, any, all, not_ (lane vectors);
+// - integer.h: uaddCarry ... findMSB; packing.h: pack/unpack Unorm, Snorm, Half;
 // - selection.h: the ternary per lane, and if/else that skips a side;
 // - primitives.h: the instructions the others are written in.
 // docs/llvmpipe/glsl-builtins.md has the reading of Mesa behind each one.
@@ -25,6 +27,9 @@
 #include "shading/builtins/common.h"
 #include "shading/builtins/exponential.h"
 #include "shading/builtins/geometric.h"
+#include "shading/builtins/integer.h"
+#include "shading/builtins/packing.h"
+#include "shading/builtins/relational.h"
 #include "shading/builtins/selection.h"
 #include "shading/builtins/trigonometry.h"
 

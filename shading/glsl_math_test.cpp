@@ -241,6 +241,73 @@ TEST(GlslMath, GeometricFormsAgreeAndKeepLlvmpipesOrder) {
     EXPECT_EQ(glsl::refract(glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), 2.0f), glm::vec3(0.0f));  // total reflection
 }
 
+// Integer and packing built-ins: the spec's values, llvmpipe's where the
+// spec leaves them open (masked shift counts), lanes equal to one int.
+TEST(GlslMath, IntegerAndPackingValues) {
+    using namespace glsl;
+    uint32_t carry = 0, borrow = 0;
+    EXPECT_EQ(uaddCarry(0xFFFFFFFFu, 2u, carry), 1u);
+    EXPECT_EQ(carry, 1u);
+    EXPECT_EQ(usubBorrow(1u, 2u, borrow), 0xFFFFFFFFu);
+    EXPECT_EQ(borrow, 1u);
+    uint32_t msb = 0, lsb = 0;
+    umulExtended(0xFFFFFFFFu, 0xFFFFFFFFu, msb, lsb);
+    EXPECT_EQ(msb, 0xFFFFFFFEu);
+    EXPECT_EQ(lsb, 1u);
+    int32_t imsb = 0, ilsb = 0;
+    imulExtended(-2, 3, imsb, ilsb);
+    EXPECT_EQ(imsb, -1);
+    EXPECT_EQ(ilsb, -6);
+    EXPECT_EQ(bitfieldExtract(int32_t(0xF0), 4, 4), -1);  // sign-extended
+    EXPECT_EQ(bitfieldExtract(0xF0u, 4, 4), 0xFu);
+    EXPECT_EQ(bitfieldExtract(int32_t(0x12345678), 0, 0), 0);
+    EXPECT_EQ(bitfieldExtract(0x12345678u, 0, 32), 0x12345678u);
+    EXPECT_EQ(bitfieldInsert(0xFFFFFFFFu, 0u, 8, 8), 0xFFFF00FFu);
+    EXPECT_EQ(bitfieldInsert(1u, 7u, 3, 32), 7u);  // bits > 31: insert
+    EXPECT_EQ(bitfieldReverse(1u), 0x80000000u);
+    EXPECT_EQ(bitCount(int32_t(-1)), 32);
+    EXPECT_EQ(findLSB(0u), -1);
+    EXPECT_EQ(findMSB(0u), -1);
+    EXPECT_EQ(findMSB(int32_t(-1)), -1);
+    EXPECT_EQ(findMSB(int32_t(-2)), 0);
+    EXPECT_EQ(findMSB(0x80000000u), 31);
+    // Ties go to even; NaN packs as 0 (Unorm) and as -1's code (Snorm).
+    EXPECT_EQ(packUnorm4x8(glm::vec4(0.5f / 255.0f, 1.5f / 255.0f, 1.0f, std::nanf(""))), 0x00FF0200u);
+    EXPECT_EQ(packSnorm2x16(glm::vec2(std::nanf(""), 1.0f)), 0x7FFF8001u);
+    EXPECT_EQ(packHalf2x16(glm::vec2(1.0f, -std::numeric_limits<float>::infinity())), 0xFC003C00u);
+    EXPECT_EQ(packHalf2x16(glm::vec2(-std::nanf(""), 65520.0f)), 0x7C00FFFFu);  // NaN 0x7FFF with its sign
+    EXPECT_EQ(std::bit_cast<uint32_t>(unpackHalf2x16(0x7C01u).x), 0x7FFFFFFFu);
+    EXPECT_EQ(unpackHalf2x16(0x00013C00u), glm::vec2(1.0f, 0x1p-24f));
+    EXPECT_EQ(unpackSnorm4x8(0x80u).x, -1.0f);  // -128 clamps to -1
+    EXPECT_EQ(unpackUnorm4x8(0xFFu).x, 1.0f);
+    // Lanes give each lane's one-int answer.
+    UInt a, b;
+    Int off, bits;
+    for (int l = 0; l < kLanes; ++l) {
+        a.set(l, 0x9E3779B9u * uint32_t(l + 1));
+        b.set(l, 0x85EBCA6Bu * uint32_t(l + 3));
+        off.set(l, l * 5 % 33);
+        bits.set(l, l * 7 % 34);
+    }
+    const UInt ins = bitfieldInsert(a, b, off, bits);
+    const Int ext = bitfieldExtract(int_of(a), off, bits);
+    const UInt packed = packHalf2x16(Vec2(uintBitsToFloat(a), uintBitsToFloat(b)));
+    for (int l = 0; l < kLanes; ++l) {
+        EXPECT_EQ(ins[l], bitfieldInsert(a[l], b[l], off[l], bits[l]));
+        EXPECT_EQ(ext[l], bitfieldExtract(int32_t(a[l]), off[l], bits[l]));
+        EXPECT_EQ(packed[l], packHalf2x16(glm::vec2(std::bit_cast<float>(a[l]), std::bit_cast<float>(b[l]))));
+    }
+    const BVec2 lt = lessThan(UVec2(UInt(1u), UInt(0x80000000u)), UVec2(UInt(2u), UInt(1u)));
+    EXPECT_TRUE(lt.x[0]);
+    EXPECT_FALSE(lt.y[0]);  // unsigned: 0x80000000 > 1
+    EXPECT_TRUE(any(lt)[0]);
+    EXPECT_FALSE(all(lt)[0]);
+    EXPECT_TRUE(not_(lt).y[0]);
+    const Float nan(std::nanf(""));
+    EXPECT_TRUE(notEqual(Vec2(nan), Vec2(nan)).x[0]);  // unordered
+    EXPECT_FALSE(equal(Vec2(nan), Vec2(nan)).x[0]);
+}
+
 // gallivm's fmax/fmin (docs/llvmpipe/glsl-builtins.md 2.8): a tie gives the
 // second operand, one NaN the other operand. The twin gave -0.0 for
 // max(-0.0, 0.0) where llvmpipe gives +0.0 (explore profile --seed 2026).

@@ -1,5 +1,6 @@
 // lane_vec.h: GLSL's vector types with one invocation per lane: Vec2, Vec3,
-// Vec4 of simd::Float (vecN), IVecN of Int (ivecN), BVecN of Mask (bvecN).
+// Vec4 of simd::Float (vecN), IVecN of Int (ivecN), UVecN of UInt (uvecN),
+// BVecN of Mask (bvecN).
 // A fragment twin writes `Vec3 n = normalize(Vec3(frag.varying(v_normal)));`
 // where its GLSL writes `vec3 n = normalize(v_normal.xyz);`, `c.rgb() * 0.5f`
 // where it writes `c.rgb * 0.5`, and `p.set_xz(q)` for `p.xz = q`. Only
@@ -17,6 +18,7 @@
 #include <glm/vec4.hpp>
 
 #include "simd/lane_swizzle.h"
+#include "simd/lane_uint.h"
 #include "simd/lanes.h"
 
 namespace st {
@@ -24,6 +26,7 @@ namespace st {
 using simd::Float;
 using simd::Int;
 using simd::Mask;
+using simd::UInt;
 using simd::kLanes;
 
 // GLSL's vecN (T = Float), ivecN (Int) and bvecN (Mask), N = 2, 3, 4, with
@@ -44,13 +47,21 @@ template <> struct Convert<Float> {
     static ST_INLINE Float from(Float x) { return x; }
     static ST_INLINE Float from(Int x) { return simd::to_float(x); }
     static ST_INLINE Float from(Mask m) { return simd::select(m, Float(1.0f), Float(0.0f)); }
+    static ST_INLINE Float from(UInt x) { return simd::to_float(x); }
 };
 template <> struct Convert<Int> {
     static ST_INLINE Int from(Int x) { return x; }
     static ST_INLINE Int from(Float x) { return simd::itrunc(x); }
     static ST_INLINE Int from(Mask m) { return simd::select(m, Int(1), Int(0)); }
+    static ST_INLINE Int from(UInt x) { return simd::int_bits(x); }
+};
+template <> struct Convert<UInt> {  // uint(i) keeps the bits; uint(float) is not here yet
+    static ST_INLINE UInt from(UInt x) { return x; }
+    static ST_INLINE UInt from(Int x) { return UInt(x); }
+    static ST_INLINE UInt from(Mask m) { return simd::select(m, UInt(1u), UInt(0u)); }
 };
 template <> struct Convert<Mask> {
+    static ST_INLINE Mask from(UInt x) { return x != UInt(0u); }
     static ST_INLINE Mask from(Mask m) { return m; }
     static ST_INLINE Mask from(Float x) { return x != Float(0.0f); }
     static ST_INLINE Mask from(Int x) { return x != Int(0); }
@@ -165,6 +176,7 @@ template <class T> struct LaneVec<T, 4> {
 template <class T> ST_INLINE Float float_of(T v) { return lane_vec_detail::Convert<Float>::from(v); }
 template <class T> ST_INLINE Int int_of(T v) { return lane_vec_detail::Convert<Int>::from(v); }
 template <class T> ST_INLINE Mask bool_of(T v) { return lane_vec_detail::Convert<Mask>::from(v); }
+template <class T> ST_INLINE UInt uint_of(T v) { return lane_vec_detail::Convert<UInt>::from(v); }
 
 using Vec2 = LaneVec<Float, 2>;
 using Vec3 = LaneVec<Float, 3>;
@@ -175,6 +187,9 @@ using IVec4 = LaneVec<Int, 4>;
 using BVec2 = LaneVec<Mask, 2>;
 using BVec3 = LaneVec<Mask, 3>;
 using BVec4 = LaneVec<Mask, 4>;
+using UVec2 = LaneVec<UInt, 2>;
+using UVec3 = LaneVec<UInt, 3>;
+using UVec4 = LaneVec<UInt, 4>;
 
 namespace lane_vec_detail {
 // LaneVec<R, N>(f(a[0], b[0]), ...) (or f(a[i])): built in place from its

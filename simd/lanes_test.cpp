@@ -3,6 +3,7 @@
 // and out-of-range conversions included), and the few operations that look
 // across lanes (masks, permutes, reductions, gathers) do what they say.
 #include "simd/lanes.h"
+#include "simd/lane_uint.h"
 
 #include <bit>
 #include <cmath>
@@ -218,4 +219,32 @@ TEST(Lanes, LoadRows8Transposes) {
         for (int c = 0; c < 8; ++c) EXPECT_EQ(out[c][i], data[size_t(offset[i] + c)]) << "lane " << i << " float " << c;
 }
 
+}  // namespace st::simd
+
+namespace st::simd {
+// UInt is GLSL's uint: unsigned compares, logical shifts with the count
+// masked to 5 bits as gallivm masks it, float(u) correctly rounded.
+TEST(Lanes, UIntIsUnsigned) {
+    std::mt19937 rng(3);
+    for (int round = 0; round < 200; ++round) {
+        UInt a, b;
+        Int n;
+        for (int lane = 0; lane < kLanes; ++lane) {
+            a.set(lane, lane == 0 ? 0xFFFFFFFFu : lane == 1 ? 0x80000001u : uint32_t(rng()));
+            b.set(lane, uint32_t(rng()));
+            n.set(lane, int32_t(rng() % 70) - 3);
+        }
+        const Float f = to_float(a);
+        const Mask lt = a < b;
+        const UInt sr = a >> UInt(n), sl = a << UInt(n);
+        const Int ar = ashr(Int(a.v), n);
+        for (int lane = 0; lane < kLanes; ++lane) {
+            ASSERT_EQ(f[lane], float(a[lane]));
+            ASSERT_EQ(lt[lane], a[lane] < b[lane]);
+            ASSERT_EQ(sr[lane], a[lane] >> (uint32_t(n[lane]) & 31u));
+            ASSERT_EQ(sl[lane], a[lane] << (uint32_t(n[lane]) & 31u));
+            ASSERT_EQ(ar[lane], int32_t(a[lane]) >> (uint32_t(n[lane]) & 31u));
+        }
+    }
+}
 }  // namespace st::simd

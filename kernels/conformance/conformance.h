@@ -99,6 +99,11 @@ public:
     Vec4 main(const Fragment& frag) const;
 };
 
+class BuiltinsIntegerFragment final : public BuiltinsFragment<BuiltinsIntegerFragment> {  // builtins_integer.frag
+public:
+    Vec4 main(const Fragment& frag) const;
+};
+
 class LoopBudgetFragment final : public FragmentProgram<LoopBudgetFragment> {  // loop_budget.frag
 public:
     void bind(const Bindings& b) override;

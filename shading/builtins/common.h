@@ -206,6 +206,11 @@ template <int N> ST_INLINE LaneVec<Float, N> intBitsToFloat(const LaneVec<Int, N
     }(std::make_integer_sequence<int, N>());
 }
 
+ST_INLINE uint32_t floatBitsToUint(float x) { return std::bit_cast<uint32_t>(x); }
+ST_INLINE UInt floatBitsToUint(Float x) { return UInt(lanes::bits_of(x)); }
+ST_INLINE float uintBitsToFloat(uint32_t u) { return std::bit_cast<float>(u); }
+ST_INLINE Float uintBitsToFloat(UInt u) { return lanes::from_bits(simd::int_bits(u)); }
+
 // GLSL's fma(a, b, c) is not fused on llvmpipe (lower_ffma32 splits it):
 // a * b rounded, then + c. -ffp-contract=off keeps the compiler from
 // fusing it back.
