@@ -13,6 +13,8 @@
 // - geometric.h: dot, cross, length, normalize, reflect, refract;
 // - trigonometry.h: radians ... atanh, atan of one and two arguments;
 // - relational.h: lessThan ... notEqual, any, all, not_ (lane vectors);
+// - matrix.h: matrixCompMult, outerProduct, transpose, determinant, inverse
+//   (the products are simd/lane_mat.h's operators);
 // - integer.h: uaddCarry ... findMSB; packing.h: pack/unpack Unorm, Snorm, Half;
 // - selection.h: the ternary per lane, and if/else that skips a side;
 // - primitives.h: the instructions the others are written in.
@@ -28,6 +30,7 @@
 #include "shading/builtins/exponential.h"
 #include "shading/builtins/geometric.h"
 #include "shading/builtins/integer.h"
+#include "shading/builtins/matrix.h"
 #include "shading/builtins/packing.h"
 #include "shading/builtins/relational.h"
 #include "shading/builtins/selection.h"

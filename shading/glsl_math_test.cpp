@@ -308,6 +308,36 @@ TEST(GlslMath, IntegerAndPackingValues) {
     EXPECT_FALSE(equal(Vec2(nan), Vec2(nan)).x[0]);
 }
 
+// Matrices: lanes and glm give the same bits, the products keep GLSL IR's
+// order, and inverse(mat4)'s determinant is summed right-nested.
+TEST(GlslMath, MatrixFormsAgreeAndKeepMesasOrder) {
+    glm::mat4 g;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) g[c][r] = float((c * 7 + r * 3) % 11) * 0.37f - 1.5f + (c == r ? 3.0f : 0.0f);
+    const Mat4 m(g);
+    const auto bits = [](float x) { return std::bit_cast<uint32_t>(x); };
+    EXPECT_EQ(bits(glsl::determinant(m)[0]), bits(glsl::determinant(g)));
+    const glm::mat4 gi = glsl::inverse(g);
+    const Mat4 mi = glsl::inverse(m);
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) EXPECT_EQ(bits(mi[c][r][0]), bits(gi[c][r]));
+    const glm::mat4 id = g * gi;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) EXPECT_NEAR(id[c][r], c == r ? 1.0f : 0.0f, 1e-5f);
+    // m * v is the column sum left to right, as glsl::mul for glm.
+    const glm::vec4 v(0.3f, -1.7f, 2.2f, 1e-3f);
+    const Vec4 lv(v);
+    const Vec4 mv = m * lv;
+    EXPECT_EQ(bits(mv.z[0]), bits(glsl::mul(g, v).z));
+    // v * m is dot(v, m[j]), from the last term back.
+    const Vec4 vm = lv * m;
+    EXPECT_EQ(bits(vm.y[0]), bits(glsl::dot(v, g[1])));
+    EXPECT_EQ(bits(glsl::determinant(glm::mat3(g))), bits(glsl::determinant(Mat3(m))[0]));
+    EXPECT_EQ(bits(glsl::inverse(glm::mat2(g))[1][0]), bits(glsl::inverse(Mat2(m))[1][0][0]));
+    const Mat3x4 t(m);
+    EXPECT_EQ(glsl::transpose(t)[2][1][0], g[1][2]);
+}
+
 // gallivm's fmax/fmin (docs/llvmpipe/glsl-builtins.md 2.8): a tie gives the
 // second operand, one NaN the other operand. The twin gave -0.0 for
 // max(-0.0, 0.0) where llvmpipe gives +0.0 (explore profile --seed 2026).

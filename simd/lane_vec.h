@@ -90,6 +90,16 @@ template <int N, class F> ST_INLINE void for_each_index(F&& f) {
     template <int I> ST_INLINE const T& component() const {                                        \
         return const_cast<LaneVec*>(this)->template component<I>();                                \
     }                                                                                              \
+    /* v[i] for an index known or not at compile time (matrices' m[c][r]); */                    \
+    /* an index outside the vector gives x, where GLSL leaves it undefined. */                     \
+    ST_INLINE T& operator[](int i) {                                                               \
+        T* r = &component<0>();                                                                    \
+        lane_vec_detail::for_each_index<N_>([&](auto k) {                                          \
+            if (i == decltype(k)::value) r = &component<decltype(k)::value>();                     \
+        });                                                                                        \
+        return *r;                                                                                 \
+    }                                                                                              \
+    ST_INLINE const T& operator[](int i) const { return (*const_cast<LaneVec*>(this))[i]; }        \
     template <int... I> ST_INLINE void assign(const LaneVec<T, int(sizeof...(I))>& v) {            \
         static_assert(lane_vec_detail::distinct({I...}), "GLSL refuses a write repeating a component"); \
         assign_from<0, I...>(v);                                                                   \

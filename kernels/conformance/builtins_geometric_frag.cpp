@@ -6,16 +6,6 @@
 
 namespace st {
 
-namespace {
-// value() of the GLSL.
-Float value(Int index, int k) {
-    using namespace glsl;
-    const Int h = (index * Int(2 * k + 37) + Int(k * 101)) & 1023;
-    const Int e = ((index >> (k & 7)) + Int(k)) & 15;
-    return float_of(h - Int(512)) * 0.0137f * intBitsToFloat((e + Int(121)) << 23);
-}
-}  // namespace
-
 Vec4 BuiltinsGeometricFragment::main(const Fragment& frag) const {
     using namespace glsl;
     using namespace builtin_inputs;

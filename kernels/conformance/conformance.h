@@ -104,6 +104,11 @@ public:
     Vec4 main(const Fragment& frag) const;
 };
 
+class BuiltinsMatrixFragment final : public BuiltinsFragment<BuiltinsMatrixFragment> {  // builtins_matrix.frag
+public:
+    Vec4 main(const Fragment& frag) const;
+};
+
 class LoopBudgetFragment final : public FragmentProgram<LoopBudgetFragment> {  // loop_budget.frag
 public:
     void bind(const Bindings& b) override;
