@@ -715,6 +715,29 @@ PY
     [ "$(ls "$regressions"/refused/*.json | wc -l)" -eq 2 ] || fail "a refused case has no check here"
     ;;
 
+  compiler_rewrites)
+    # docs/llvmpipe/compiler-rewrites.md: each entry's scene passes with the
+    # twin writing what llvmpipe runs, and fails when the twin writes the
+    # GLSL as it stands (its twin-only uniform `naive`, uniforms.1).
+    scenes=$("$bin" list | grep '^conformance-rewrite-')
+    n=0
+    for scene in $scenes; do
+      "$bin" compare "$scene" --json --out "$work/rewrites" >"$work/rewrite.json" ||
+        fail "$scene: the twin as llvmpipe runs it fails: $(head -c 300 "$work/rewrite.json")"
+      set +e
+      "$bin" compare "$scene" --set uniforms.1.int=1 --json --out "$work/rewrites" >"$work/naive.json"
+      rc=$?
+      set -e
+      [ "$rc" -eq 1 ] || fail "$scene: the expression as written passes (exit $rc): the entry proves nothing"
+      grep -q '"pass":false' "$work/naive.json" || fail "$scene: no failing comparison for the naive twin"
+      n=$((n + 1))
+    done
+    [ "$n" -ge 15 ] || fail "only $n rewrite scenes"
+    doc="$(dirname "$0")/../docs/llvmpipe/compiler-rewrites.md"
+    for scene in $scenes; do grep -q "\`$scene\`" "$doc" || fail "$scene is not in compiler-rewrites.md"; done
+    echo "ok   $n compiler rewrites: each scene passes as llvmpipe runs it and fails as written"
+    ;;
+
   scene_docs)
     # docs/scenes.md holds each kind's field table as its space declares it.
     bash "$(dirname "$0")/../scripts/update-scene-docs.sh" "$bin" --check

@@ -109,6 +109,17 @@ public:
     Vec4 main(const Fragment& frag) const;
 };
 
+class CompilerRewritesFragment final : public FragmentProgram<CompilerRewritesFragment> {  // compiler_rewrites.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override { return 0; }
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    int group_ = 0;
+    bool naive_ = false;  // the GLSL as written (twin only), to show the scene fails with it
+};
+
 class LoopBudgetFragment final : public FragmentProgram<LoopBudgetFragment> {  // loop_budget.frag
 public:
     void bind(const Bindings& b) override;
