@@ -12,6 +12,7 @@
 
 #include "app/commands.h"
 #include "app/commands/explore.h"
+#include "app/commands/probe.h"
 #include "app/commands/fields.h"
 #include "app/error_line.h"
 #include "app/output_provenance.h"
@@ -323,6 +324,15 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     explore->add_flag("--json", explore_options.json, "the summary as one JSON object on stdout");
     add_common(explore, common, gl_given);
 
+    std::string probe_scene;
+    bool probe_json = false;
+    auto* probe = app.add_subcommand(
+        "probe", "where a shader and its twin first part: each ST_PROBE(name, value) of the GLSL, in order, written "
+                 "out alone on both backends; prints the first probe whose bits differ");
+    probe->add_option("scene", probe_scene, "a built-in scene name or .json path")->required();
+    probe->add_flag("--json", probe_json, "one JSON object: each probe run, and the first that differs");
+    add_common(probe, common, gl_given);
+
     std::vector<std::string> field_kinds;
     auto* fields = app.add_subcommand("fields", "each scene kind's fields, types, domains and defaults (Markdown)");
     fields->add_option("kinds", field_kinds, "scene kinds; default: every kind with a declared space");
@@ -383,6 +393,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
         }
         if (*figures) return st::cmd_optics_figures(out_dir, figure_photons, figure_threads);
         if (*explore) return st::cmd_explore(explore_options, common);
+        if (*probe) return st::cmd_probe(probe_scene, probe_json, common);
         if (*fields) return st::cmd_fields(field_kinds);
         if (*bench) return st::cmd_bench(scenes, frames, json, scaling, per_pass, common);
         if (*sweep) {

@@ -45,8 +45,7 @@ std::string read_source(const std::string& path, int depth = 0) {
     return out;
 }
 
-GLuint compile(const GlApi& gl, GLenum type, const std::string& path) {
-    const std::string source = read_source(path);
+GLuint compile(const GlApi& gl, GLenum type, const std::string& path, const std::string& source) {
     GLuint shader = gl.CreateShader(type);
     const char* text = source.c_str();
     gl.ShaderSource(shader, 1, &text, nullptr);
@@ -62,11 +61,12 @@ GLuint compile(const GlApi& gl, GLenum type, const std::string& path) {
     return shader;
 }
 
-GLuint link(const GlApi& gl, const std::string& vert_path, const std::string& frag_path) {
-    GLuint vs = compile(gl, GL_VERTEX_SHADER, vert_path);
+GLuint link(const GlApi& gl, const std::string& vert_path, const std::string& frag_path,
+            const std::string& frag_source) {
+    GLuint vs = compile(gl, GL_VERTEX_SHADER, vert_path, read_source(vert_path));
     GLuint fs = 0;
     try {
-        fs = compile(gl, GL_FRAGMENT_SHADER, frag_path);
+        fs = compile(gl, GL_FRAGMENT_SHADER, frag_path, frag_source);
     } catch (...) {
         gl.DeleteShader(vs);
         throw;
@@ -205,6 +205,8 @@ void set_uniform(const GlApi& gl, GLuint program, const Uniform& u) {
 
 }  // namespace
 
+std::string read_glsl_source(const std::string& path) { return read_source(path); }
+
 struct GlRenderer::State {
     struct Draw {
         GLuint program = 0, vao = 0, vbo = 0, ebo = 0;
@@ -281,6 +283,14 @@ GlRenderer::~GlRenderer() {
     for (auto& [key, program] : state_->programs) gl.DeleteProgram(program);
 }
 
+void GlRenderer::set_fragment_filter(FragmentFilter filter) {
+    context_->make_current();
+    const GlApi& gl = context_->gl();
+    for (auto& [key, program] : state_->programs) gl.DeleteProgram(program);
+    state_->programs.clear();
+    fragment_filter_ = std::move(filter);
+}
+
 std::string GlRenderer::renderer() const { return context_->renderer(); }
 std::string GlRenderer::version() const { return context_->version(); }
 GlPlatform GlRenderer::platform() const { return context_->platform(); }
@@ -352,11 +362,14 @@ void GlRenderer::prepare(const Frame& frame) {
         for (const DrawCall& dc : pass.draws) {
             auto key = std::make_pair(dc.vertex, dc.fragment);
             auto it = state_->programs.find(key);
-            if (it == state_->programs.end())
+            if (it == state_->programs.end()) {
+                const std::string& frag_path = shaders_->path(dc.fragment, ".frag");
+                std::string frag_source = read_source(frag_path);
+                if (fragment_filter_) frag_source = fragment_filter_(dc.fragment, frag_source);
                 it = state_->programs
-                         .emplace(key, link(gl, shaders_->path(dc.vertex, ".vert"),
-                                            shaders_->path(dc.fragment, ".frag")))
+                         .emplace(key, link(gl, shaders_->path(dc.vertex, ".vert"), frag_path, frag_source))
                          .first;
+            }
             State::Draw d;
             d.program = it->second;
             d.state = dc.state;

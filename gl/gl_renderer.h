@@ -2,6 +2,7 @@
 // on a GL context (llvmpipe), into RGBA32F framebuffer objects.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -39,6 +40,13 @@ public:
         return read_back();
     }
 
+    // Rewrites each fragment program's source (its #includes spliced in)
+    // before it compiles: `shadertwin probe` builds its probe runs so. An
+    // empty filter compiles the files as they are. Drops the programs
+    // compiled so far.
+    using FragmentFilter = std::function<std::string(const std::string& name, const std::string& source)>;
+    void set_fragment_filter(FragmentFilter filter);
+
     std::string renderer() const;
     std::string version() const;
     GlPlatform platform() const;  // the one the context got: OSMesa or EGL
@@ -48,6 +56,11 @@ private:
     std::unique_ptr<ShaderFiles> shaders_;
     std::unique_ptr<GlContext> context_;
     std::unique_ptr<State> state_;
+    FragmentFilter fragment_filter_;
 };
+
+// A GLSL file's text with its `#include "file"` lines spliced in, as the
+// renderer compiles it. Throws std::runtime_error naming the file.
+std::string read_glsl_source(const std::string& path);
 
 }  // namespace st

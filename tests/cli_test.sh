@@ -738,6 +738,42 @@ PY
     echo "ok   $n compiler rewrites: each scene passes as llvmpipe runs it and fails as written"
     ;;
 
+  probe)
+    # shadertwin probe names the first probe whose bits differ: the probe
+    # example's twin broken on purpose in each of the three ways its GLSL
+    # meets (uniforms.0: 1 a factored sum, 2 a matrix chain, 3 a mix with
+    # constant ends), and nothing when it is whole.
+    "$bin" probe conformance-probe >"$work/probe.txt" || fail "the whole twin: $(cat "$work/probe.txt")"
+    grep -q "^all 4 probes agree bit for bit" "$work/probe.txt" || fail "the whole twin: $(cat "$work/probe.txt")"
+    for case in "1 lit" "2 projected" "3 layers"; do
+      set -- $case
+      set +e
+      "$bin" probe conformance-probe --set uniforms.0.int="$1" >"$work/probe.txt"
+      rc=$?
+      set -e
+      [ "$rc" -eq 1 ] || fail "break $1: exit $rc, expected 1"
+      grep -q "^DIFFER $2: [0-9]* of 4096 pixels; first at pixel" "$work/probe.txt" ||
+        fail "break $1 was not found at probe $2: $(cat "$work/probe.txt")"
+      [ "$(grep -c '^DIFFER' "$work/probe.txt")" -eq 1 ] || fail "break $1: more than the first differing probe"
+      grep -q "^  cpu (.*) \[0x" "$work/probe.txt" && grep -q "^  gl  (.*) \[0x" "$work/probe.txt" ||
+        fail "break $1: no values with their bits"
+      echo "ok   probe finds break $1 at $2: $(grep '^DIFFER' "$work/probe.txt")"
+    done
+    set +e
+    "$bin" probe conformance-probe --set uniforms.0.int=2 --json >"$work/probe.json"
+    set -e
+    python3 - "$work/probe.json" <<'PY' || fail "probe --json"
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert j["first_differing"] == "projected", j
+assert [p["probe"] for p in j["probes"]] == ["t", "lit", "projected"], j
+last = j["probes"][-1]
+assert last["pixels_differ"] > 0 and len(last["cpu_bits"]) == 4 and last["cpu_bits"] != last["gl_bits"], last
+PY
+    echo "ok   probe --json names the same probe"
+    expect_refused_without_out "a scene without probes" "ST_PROBE" "$bin" probe conformance-rewrite-factor
+    ;;
+
   scene_docs)
     # docs/scenes.md holds each kind's field table as its space declares it.
     bash "$(dirname "$0")/../scripts/update-scene-docs.sh" "$bin" --check

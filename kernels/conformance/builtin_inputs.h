@@ -36,9 +36,9 @@ inline Float from_bits_of(Int index) {
 // edges[(index ^ (index >> 4) ^ (index >> 8)) & 15], the second operand.
 inline Float edge_of(Int index) { return glsl::intBitsToFloat(glsl::element(kEdges, (index ^ (index >> 4) ^ (index >> 8)) & 15)); }
 
-// value(index, k) of the geometric and matrix programs: a finite value for
+// value(index, k) of the geometric, matrix and rewrite programs: a finite value for
 // component k, one of 1024 steps of 0.0137 around zero scaled by 2^-6 ... 2^9.
-inline Float value(Int index, int k) {
+inline Float finite_value(Int index, int k) {
     const Int h = (index * Int(2 * k + 37) + Int(k * 101)) & 1023;
     const Int e = ((index >> (k & 7)) + Int(k)) & 15;
     return float_of(h - Int(512)) * 0.0137f * glsl::intBitsToFloat((e + Int(121)) << 23);

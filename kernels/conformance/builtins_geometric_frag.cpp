@@ -6,6 +6,11 @@
 
 namespace st {
 
+namespace {
+// value() of the GLSL (builtin_inputs.h).
+Float value(Int index, int k) { return builtin_inputs::finite_value(index, k); }
+}  // namespace
+
 Vec4 BuiltinsGeometricFragment::main(const Fragment& frag) const {
     using namespace glsl;
     using namespace builtin_inputs;

@@ -9,6 +9,11 @@
 
 namespace st {
 
+namespace {
+// value() of the GLSL (builtin_inputs.h).
+Float value(Int index, int k) { return builtin_inputs::finite_value(index, k); }
+}  // namespace
+
 void CompilerRewritesFragment::bind(const Bindings& b) {
     group_ = b.get_int("group");
     naive_ = b.get_int("naive") != 0;
@@ -16,7 +21,6 @@ void CompilerRewritesFragment::bind(const Bindings& b) {
 
 Vec4 CompilerRewritesFragment::main(const Fragment& frag) const {
     using namespace glsl;
-    using builtin_inputs::value;
     const Int index = builtin_inputs::pixel_index(frag);
     const Float a = value(index, 0), b = value(index, 1), c = value(index, 2), d = value(index, 3);
     const Vec3 colour(value(index, 4), value(index, 5), value(index, 6));

@@ -120,6 +120,16 @@ private:
     bool naive_ = false;  // the GLSL as written (twin only), to show the scene fails with it
 };
 
+class ProbeDemoFragment final : public FragmentProgram<ProbeDemoFragment> {  // probe_demo.frag
+public:
+    void bind(const Bindings& b) override { twin_breaks_ = b.get_int("twin_breaks"); }
+    uint32_t inputs_read() const override { return 0; }
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    int twin_breaks_ = 0;  // twin only: which rewrite to write as the GLSL reads (0: none)
+};
+
 class LoopBudgetFragment final : public FragmentProgram<LoopBudgetFragment> {  // loop_budget.frag
 public:
     void bind(const Bindings& b) override;
