@@ -52,6 +52,20 @@ ST_INLINE Int shl(Int a, Int n) { return Int(IntV(UIntV(a.v) << UIntV(n.v & 31))
 ST_INLINE Int ashr(Int a, Int n) { return Int(a.v >> (n.v & 31)); }
 ST_INLINE Int operator~(Int a) { return Int(~a.v); }
 
+// uint(f) for f in [0, 2^32): truncated toward zero (fptoui). Below 2^31 it
+// is the int conversion; from 2^31 up, the int conversion of f - 2^31 (exact
+// there) with the top bit set. GLSL leaves a negative, NaN or too large f
+// undefined, and llvmpipe's answer there depends on the host (LLVM lowers
+// fptoui with AVX-512's vcvttps2udq where it can, with this two-step sequence
+// on AVX2): the twin gives this sequence's answer, without undefined
+// behaviour, and no scene relies on it.
+ST_INLINE UInt to_uint(Float x) {
+    const Mask high = x >= Float(2147483648.0f);
+    const Int low_part = itrunc(x);
+    const Int high_part = itrunc(x - Float(2147483648.0f)) ^ Int(INT32_MIN);
+    return UInt(select(high, high_part, low_part));
+}
+
 // float(u): correctly rounded from the unsigned value (uitofp), as the
 // two halves' exact sum: the high 16 bits times 2^16 (exact), plus the low.
 ST_INLINE Float to_float(UInt x) {

@@ -55,8 +55,9 @@ template <> struct Convert<Int> {
     static ST_INLINE Int from(Mask m) { return simd::select(m, Int(1), Int(0)); }
     static ST_INLINE Int from(UInt x) { return simd::int_bits(x); }
 };
-template <> struct Convert<UInt> {  // uint(i) keeps the bits; uint(float) is not here yet
+template <> struct Convert<UInt> {  // uint(i) keeps the bits; uint(f) truncates (lane_uint.h)
     static ST_INLINE UInt from(UInt x) { return x; }
+    static ST_INLINE UInt from(Float x) { return simd::to_uint(x); }
     static ST_INLINE UInt from(Int x) { return UInt(x); }
     static ST_INLINE UInt from(Mask m) { return simd::select(m, UInt(1u), UInt(0u)); }
 };

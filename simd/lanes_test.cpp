@@ -238,12 +238,16 @@ TEST(Lanes, UIntIsUnsigned) {
         const Mask lt = a < b;
         const UInt sr = a >> UInt(n), sl = a << UInt(n);
         const Int ar = ashr(Int(a.v), n);
+        Float in_range;  // [0, 2^32): where uint(f) is defined
+        for (int lane = 0; lane < kLanes; ++lane) in_range.set(lane, float(a[lane]) * float(lane) / float(kLanes));
+        const UInt u = to_uint(in_range);
         for (int lane = 0; lane < kLanes; ++lane) {
             ASSERT_EQ(f[lane], float(a[lane]));
             ASSERT_EQ(lt[lane], a[lane] < b[lane]);
             ASSERT_EQ(sr[lane], a[lane] >> (uint32_t(n[lane]) & 31u));
             ASSERT_EQ(sl[lane], a[lane] << (uint32_t(n[lane]) & 31u));
             ASSERT_EQ(ar[lane], int32_t(a[lane]) >> (uint32_t(n[lane]) & 31u));
+            ASSERT_EQ(u[lane], uint32_t(in_range[lane])) << in_range[lane];
         }
     }
 }

@@ -16,6 +16,7 @@
 //  10: unpackSnorm2x16, unpackHalf2x16
 //  11: unpackUnorm4x8
 //  12: unpackSnorm4x8
+//  13: uint(f) and int(f) of floats in [0, 2^32) and (-2^31, 2^31)
 // a and b are hashes of the pixel's index, with 0, 0xFFFFFFFF and
 // 0x80000000 among them; offset and bits go past the spec's range (GLSL
 // leaves that undefined; llvmpipe masks shift counts to 5 bits). f, the
@@ -94,7 +95,12 @@ void main() {
         frag_colour = vec4(unpackSnorm2x16(a), unpackHalf2x16(a));
     } else if (group == 11) {
         frag_colour = unpackUnorm4x8(a);
-    } else {
+    } else if (group == 12) {
         frag_colour = unpackSnorm4x8(a);
+    } else {
+        // In range only: outside, GLSL leaves the conversion undefined.
+        float u = float(a) * (float(b & 0xFFFFu) / 65536.0);
+        float i = float(int(a)) * (float(b >> 16) / 65536.0);
+        frag_colour = vec4(halves(uint(u)), halves(uint(int(i))));
     }
 }

@@ -44,4 +44,10 @@ inline Float finite_value(Int index, int k) {
     return float_of(h - Int(512)) * 0.0137f * glsl::intBitsToFloat((e + Int(121)) << 23);
 }
 
+// column(index, k) of the matrix and probe programs: finite values 4k ... 4k + 3.
+inline Vec4 finite_column(Int index, int k) {
+    return Vec4(finite_value(index, 4 * k), finite_value(index, 4 * k + 1), finite_value(index, 4 * k + 2),
+                finite_value(index, 4 * k + 3));
+}
+
 }  // namespace st::builtin_inputs

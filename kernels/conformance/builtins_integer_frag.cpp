@@ -69,8 +69,13 @@ Vec4 BuiltinsIntegerFragment::main(const Fragment& frag) const {
         return Vec4(unpackSnorm2x16(a), unpackHalf2x16(a));
     } else if (group_ == 11) {
         return unpackUnorm4x8(a);
+    } else if (group_ == 12) {
+        return unpackSnorm4x8(a);
     }
-    return unpackSnorm4x8(a);
+    // In range only: outside, GLSL leaves the conversion undefined.
+    const Float u = float_of(a) * (float_of(b & UInt(0xFFFFu)) / 65536.0f);
+    const Float i = float_of(int_of(a)) * (float_of(b >> 16) / 65536.0f);
+    return Vec4(halves(uint_of(u)), halves(UInt(int_of(i))));
 }
 
 }  // namespace st

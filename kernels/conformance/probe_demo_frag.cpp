@@ -12,9 +12,7 @@ namespace st {
 namespace {
 // value() of the GLSL (builtin_inputs.h).
 Float value(Int index, int k) { return builtin_inputs::finite_value(index, k); }
-Vec4 column(Int index, int k) {
-    return Vec4(value(index, 4 * k), value(index, 4 * k + 1), value(index, 4 * k + 2), value(index, 4 * k + 3));
-}
+Vec4 column(Int index, int k) { return builtin_inputs::finite_column(index, k); }
 }  // namespace
 
 Vec4 ProbeDemoFragment::main(const Fragment& frag) const {
