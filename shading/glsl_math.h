@@ -16,6 +16,7 @@
 // - matrix.h: matrixCompMult, outerProduct, transpose, determinant, inverse
 //   (the products are simd/lane_mat.h's operators);
 // - integer.h: uaddCarry ... findMSB; packing.h: pack/unpack Unorm, Snorm, Half;
+// - folded.h: the host C library's values, which built-ins of constants fold to;
 // - selection.h: the ternary per lane, and if/else that skips a side;
 // - primitives.h: the instructions the others are written in.
 // docs/llvmpipe/glsl-builtins.md has the reading of Mesa behind each one.
@@ -28,6 +29,7 @@
 
 #include "shading/builtins/common.h"
 #include "shading/builtins/exponential.h"
+#include "shading/builtins/folded.h"
 #include "shading/builtins/geometric.h"
 #include "shading/builtins/integer.h"
 #include "shading/builtins/matrix.h"

@@ -21,6 +21,9 @@
 //  13: reflect(i, n)                     runs as i - (dot(n, i) * 2) n, which
 //                                        overflows where i - 2 (dot(n, i) n) does not
 //  14: fma(a, b, c)                      runs as a * b + c, not fused
+//  15: sin(1.0), cos(2.0), exp(1.7), pow(3.0, 0.7)   folded by the compiler
+//                                        with the host C library (sinf, ...)
+//  16: a loop of sin(float(i) * 0.7 + 1.1), unrolled and then folded
 // Operands are finite values of many magnitudes from the pixel's index;
 // nothing is a constant but what the expression writes, so nothing else is
 // folded. The twin writes what llvmpipe runs; its uniform `naive` (twin
@@ -76,6 +79,14 @@ void main() {
         frag_colour = A * B * C * vec4(colour, d);
     } else if (group == 13)
         frag_colour = vec4(reflect(colour * 8e34, normalize(diff)), 0.0);
-    else
+    else if (group == 14)
         frag_colour = vec4(fma(a, b, c), fma(colour, diff, vec3(d)));
+    else if (group == 15)
+        frag_colour = vec4(sin(1.0), cos(2.0), exp(1.7), pow(3.0, 0.7));
+    else {
+        float s = 0.0;
+        for (int i = 0; i < 8; ++i)
+            s += sin(float(i) * 0.7 + 1.1);
+        frag_colour = vec4(s, 0.0, 0.0, 0.0);
+    }
 }

@@ -70,6 +70,20 @@ Vec4 CompilerRewritesFragment::main(const Fragment& frag) const {
         const Vec3 i = colour * 8e34f, n = normalize(diff);
         return Vec4(naive_ ? i - 2.0f * (dot(n, i) * n) : reflect(i, n), zero);
     }
+    case 15:  // constant folding with the host C library (glsl::folded)
+        if (naive_) return Vec4(sin(Float(1.0f)), cos(Float(2.0f)), exp(Float(1.7f)), pow(Float(3.0f), Float(0.7f)));
+        return Vec4(Float(folded::sin(1.0f)), Float(folded::cos(2.0f)), Float(folded::exp(1.7f)),
+                    Float(folded::pow(3.0f, 0.7f)));
+    case 16: {  // the loop unrolled (NIR), then each sin and the sums folded
+        float s = 0.0f;
+        for (int i = 0; i < 8; ++i) s += folded::sin(float(i) * 0.7f + 1.1f);
+        if (naive_) {
+            Float n(0.0f);
+            for (int i = 0; i < 8; ++i) n = n + sin(Float(float(i) * 0.7f + 1.1f));
+            return Vec4(n, zero, zero, zero);
+        }
+        return Vec4(Float(s), zero, zero, zero);
+    }
     default:  // lower_ffma32: GLSL's fma is a * b + c, two roundings (glsl::fma)
         if (naive_)
             return Vec4(simd::fmuladd(a, b, c), simd::fmuladd(colour.x, diff.x, d), simd::fmuladd(colour.y, diff.y, d),
