@@ -732,7 +732,7 @@ PY
       grep -q '"pass":false' "$work/naive.json" || fail "$scene: no failing comparison for the naive twin"
       n=$((n + 1))
     done
-    [ "$n" -ge 17 ] || fail "only $n rewrite scenes"
+    [ "$n" -ge 20 ] || fail "only $n rewrite scenes"
     doc="$(dirname "$0")/../docs/llvmpipe/compiler-rewrites.md"
     for scene in $scenes; do grep -q "\`$scene\`" "$doc" || fail "$scene is not in compiler-rewrites.md"; done
     echo "ok   $n compiler rewrites: each scene passes as llvmpipe runs it and fails as written"

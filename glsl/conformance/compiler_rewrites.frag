@@ -24,6 +24,9 @@
 //  15: sin(1.0), cos(2.0), exp(1.7), pow(3.0, 0.7)   folded by the compiler
 //                                        with the host C library (sinf, ...)
 //  16: a loop of sin(float(i) * 0.7 + 1.1), unrolled and then folded
+//  17: 1.0 / inversesqrt(q)              runs as sqrt(q)
+//  18: exp(log(q)), exp2(log2(q))        run as q
+//  19: 1.0 / (1.0 / q)                   runs as q
 // Operands are finite values of many magnitudes from the pixel's index;
 // nothing is a constant but what the expression writes, so nothing else is
 // folded. The twin writes what llvmpipe runs; its uniform `naive` (twin
@@ -83,6 +86,12 @@ void main() {
         frag_colour = vec4(fma(a, b, c), fma(colour, diff, vec3(d)));
     else if (group == 15)
         frag_colour = vec4(sin(1.0), cos(2.0), exp(1.7), pow(3.0, 0.7));
+    else if (group == 17)
+        frag_colour = vec4(1.0 / inversesqrt(abs(a)), 0.0, 0.0, 0.0);
+    else if (group == 18)
+        frag_colour = vec4(exp(log(abs(a))), exp2(log2(abs(b))), 0.0, 0.0);
+    else if (group == 19)
+        frag_colour = vec4(1.0 / (1.0 / a), 0.0, 0.0, 0.0);
     else {
         float s = 0.0;
         for (int i = 0; i < 8; ++i)

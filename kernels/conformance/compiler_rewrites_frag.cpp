@@ -84,6 +84,13 @@ Vec4 CompilerRewritesFragment::main(const Fragment& frag) const {
         }
         return Vec4(Float(s), zero, zero, zero);
     }
+    case 17:  // GLSL IR do_algebraic: rcp(rsq(q)) -> sqrt(q)
+        return Vec4(naive_ ? 1.0f / inversesqrt(abs(a)) : sqrt(abs(a)), zero, zero, zero);
+    case 18:  // GLSL IR do_algebraic: exp(log(q)) -> q, exp2(log2(q)) -> q
+        if (naive_) return Vec4(exp(log(abs(a))), exp2(log2(abs(b))), zero, zero);
+        return Vec4(abs(a), abs(b), zero, zero);
+    case 19:  // GLSL IR do_algebraic: rcp(rcp(q)) -> q
+        return Vec4(naive_ ? 1.0f / (1.0f / a) : a, zero, zero, zero);
     default:  // lower_ffma32: GLSL's fma is a * b + c, two roundings (glsl::fma)
         if (naive_)
             return Vec4(simd::fmuladd(a, b, c), simd::fmuladd(colour.x, diff.x, d), simd::fmuladd(colour.y, diff.y, d),
