@@ -26,7 +26,9 @@ ParamSpace pass_fields() {
         .draws(0, 1).edge({0, 1});
     s.text("fragment", "required", "the program: glsl/conformance/<fragment>.frag");
     s.object("uniforms", false, "the program's uniforms; each has a name and exactly one value", 0, 64);
-    s.text("uniforms[].name", "required", "the GLSL uniform's name");
+    s.text("uniforms[].name", "required",
+           "the GLSL uniform's name; a name beginning `twin_` is a switch only the twin reads (to break it on "
+           "purpose in a test), which the explorer never changes");
     // A uniform's value keeps the type its program declares: the explorer
     // changes the one given, never adds another. Values end at 1e6 as
     // colours do (kMaxAttribute): a scale of 1e30 made the derivatives

@@ -79,6 +79,12 @@ const nlohmann::json* json_at(const nlohmann::json& doc, const std::string& path
     return node;
 }
 
+bool is_twin_switch(const nlohmann::json* entry) {
+    if (!entry || !entry->is_object()) return false;
+    const auto name = entry->find("name");
+    return name != entry->end() && name->is_string() && name->get<std::string>().rfind("twin_", 0) == 0;
+}
+
 void json_set(nlohmann::json& doc, const std::string& path, nlohmann::json value) {
     nlohmann::json* node = &doc;
     for (const std::string& seg : split(path)) {
@@ -201,13 +207,16 @@ nlohmann::json ParamSampler::draw_value(const FieldSpec& f, const std::string& p
 }
 
 // A field (or an object around it) declared only_if_present is changed
-// only where the document has it: the sampler never adds it.
+// only where the document has it: the sampler never adds it. Nor does it
+// change anything in an entry named twin_* (a uniform only the twin reads,
+// which breaks it on purpose; see is_twin_switch).
 bool ParamSampler::present_enough(const std::string& path, const nlohmann::json& doc) const {
     std::string prefix;
     for (const std::string& seg : split(path)) {
         prefix += (prefix.empty() ? "" : ".") + seg;
         const FieldSpec* f = is_index(seg) ? nullptr : space_.find(ParamSpace::normalise(prefix));
         if (f && f->if_present && !json_at(doc, prefix)) return false;
+        if (is_index(seg) && is_twin_switch(json_at(doc, prefix))) return false;
     }
     return true;
 }

@@ -75,6 +75,13 @@ private:
 std::vector<Assignment> shrink_assignments(std::vector<Assignment> drawn,
                                            const std::function<bool(const std::vector<Assignment>&)>& fails);
 
+// Whether `entry` (an array entry of a scene) is a twin-only switch: an
+// object whose "name" begins with "twin_", such as the uniform twin_naive
+// that makes a twin write the GLSL as it stands so that a test can see the
+// scene fail. The GLSL declares no such uniform, so any value but the
+// scene's own breaks the twin by design; the explorer never draws one.
+bool is_twin_switch(const nlohmann::json* entry);
+
 // The value at a dotted concrete path, or null.
 const nlohmann::json* json_at(const nlohmann::json& doc, const std::string& path);
 // Sets it, creating objects on the way (not array entries).

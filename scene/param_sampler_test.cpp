@@ -53,6 +53,32 @@ TEST(ParamSampler, DrawsInsideTheDomainAndTheSameForTheSameSeed) {
     EXPECT_TRUE(steps_seen.count(128));  // the explorer's cap of 512
 }
 
+// A twin-only switch (a uniform named twin_*, which only the twin reads and
+// which breaks it on purpose) is never drawn: explore --seed 78 once set
+// conformance-rewrite-exp-log's twin_naive to 16 and reported the designed
+// failure as a defect. The other uniform (group) is drawn.
+TEST(ParamSampler, NeverDrawsATwinOnlySwitch) {
+    const ParamSampler sampler(*kind_space("conformance"));
+    for (const char* scene : {"conformance-rewrite-exp-log", "conformance-probe"}) {
+        const nlohmann::json base = read_sampler_base(SceneSources().find(scene)->path);
+        std::set<std::string> uniforms_drawn;
+        for (uint64_t seed = 0; seed < 3000; ++seed) {
+            SampleRng rng(seed);
+            for (const Assignment& a : sampler.draw(base, rng, 3)) {
+                if (a.path.rfind("uniforms.", 0) != 0) continue;
+                const std::string entry = a.path.substr(0, a.path.find('.', 9));
+                ASSERT_FALSE(is_twin_switch(json_at(base, entry))) << scene << ": " << a.path;
+                uniforms_drawn.insert(entry);
+            }
+        }
+        // exp-log's group is drawn; the probe scene has no other uniform.
+        EXPECT_EQ(uniforms_drawn.size(), std::string(scene) == "conformance-probe" ? 0u : 1u) << scene;
+    }
+    const nlohmann::json twin = {{"name", "twin_breaks"}, {"int", 0}}, other = {{"name", "twins"}, {"int", 0}};
+    EXPECT_TRUE(is_twin_switch(&twin));
+    EXPECT_FALSE(is_twin_switch(&other));
+}
+
 TEST(ParamSampler, ApplyKeepsTheDocumentConsistentWithTheSpace) {
     const ParamSampler sampler(*kind_space("relief"));
     const nlohmann::json base = read_sampler_base(SceneSources().find("relief-two-layer")->path);

@@ -718,7 +718,7 @@ PY
   compiler_rewrites)
     # docs/llvmpipe/compiler-rewrites.md: each entry's scene passes with the
     # twin writing what llvmpipe runs, and fails when the twin writes the
-    # GLSL as it stands (its twin-only uniform `naive`, uniforms.1). One run
+    # GLSL as it stands (its twin-only uniform `twin_naive`, uniforms.1). One run
     # of the tool for all scenes each way (a start costs 0.3 s).
     scenes=$("$bin" list | grep '^conformance-rewrite-')
     n=$(echo "$scenes" | wc -w)

@@ -29,7 +29,7 @@
 //  19: 1.0 / (1.0 / q)                   runs as q
 // Operands are finite values of many magnitudes from the pixel's index;
 // nothing is a constant but what the expression writes, so nothing else is
-// folded. The twin writes what llvmpipe runs; its uniform `naive` (twin
+// folded. The twin writes what llvmpipe runs; its uniform `twin_naive` (twin
 // only: this program has none, GL ignores it) makes it write the
 // expression as it stands, which cli.compiler_rewrites shows to fail.
 // Twin: kernels/conformance/compiler_rewrites_frag.cpp.

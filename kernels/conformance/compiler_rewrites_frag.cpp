@@ -16,7 +16,7 @@ Float value(Int index, int k) { return builtin_inputs::finite_value(index, k); }
 
 void CompilerRewritesFragment::bind(const Bindings& b) {
     group_ = b.get_int("group");
-    naive_ = b.get_int("naive") != 0;
+    naive_ = b.get_int("twin_naive") != 0;
 }
 
 Vec4 CompilerRewritesFragment::main(const Fragment& frag) const {
@@ -70,11 +70,24 @@ Vec4 CompilerRewritesFragment::main(const Fragment& frag) const {
         const Vec3 i = colour * 8e34f, n = normalize(diff);
         return Vec4(naive_ ? i - 2.0f * (dot(n, i) * n) : reflect(i, n), zero);
     }
+    case 14:  // lower_ffma32: GLSL's fma is a * b + c, two roundings (glsl::fma)
+        if (naive_)
+            return Vec4(simd::fmuladd(a, b, c), simd::fmuladd(colour.x, diff.x, d), simd::fmuladd(colour.y, diff.y, d),
+                        simd::fmuladd(colour.z, diff.z, d));
+        return Vec4(fma(a, b, c), fma(colour, diff, Vec3(d)));
     case 15:  // constant folding with the host C library (glsl::folded)
         if (naive_) return Vec4(sin(Float(1.0f)), cos(Float(2.0f)), exp(Float(1.7f)), pow(Float(3.0f), Float(0.7f)));
         return Vec4(Float(folded::sin(1.0f)), Float(folded::cos(2.0f)), Float(folded::exp(1.7f)),
                     Float(folded::pow(3.0f, 0.7f)));
-    case 16: {  // the loop unrolled (NIR), then each sin and the sums folded
+    case 17:  // GLSL IR do_algebraic: rcp(rsq(q)) -> sqrt(q)
+        return Vec4(naive_ ? 1.0f / inversesqrt(abs(a)) : sqrt(abs(a)), zero, zero, zero);
+    case 18:  // GLSL IR do_algebraic: exp(log(q)) -> q, exp2(log2(q)) -> q
+        if (naive_) return Vec4(exp(log(abs(a))), exp2(log2(abs(b))), zero, zero);
+        return Vec4(abs(a), abs(b), zero, zero);
+    case 19:  // GLSL IR do_algebraic: rcp(rcp(q)) -> q
+        return Vec4(naive_ ? 1.0f / (1.0f / a) : a, zero, zero, zero);
+    default: {  // 16 and any other group, as the GLSL's last else: the loop unrolled (NIR), then
+                //  each sin and the sums folded
         float s = 0.0f;
         for (int i = 0; i < 8; ++i) s += folded::sin(float(i) * 0.7f + 1.1f);
         if (naive_) {
@@ -84,18 +97,6 @@ Vec4 CompilerRewritesFragment::main(const Fragment& frag) const {
         }
         return Vec4(Float(s), zero, zero, zero);
     }
-    case 17:  // GLSL IR do_algebraic: rcp(rsq(q)) -> sqrt(q)
-        return Vec4(naive_ ? 1.0f / inversesqrt(abs(a)) : sqrt(abs(a)), zero, zero, zero);
-    case 18:  // GLSL IR do_algebraic: exp(log(q)) -> q, exp2(log2(q)) -> q
-        if (naive_) return Vec4(exp(log(abs(a))), exp2(log2(abs(b))), zero, zero);
-        return Vec4(abs(a), abs(b), zero, zero);
-    case 19:  // GLSL IR do_algebraic: rcp(rcp(q)) -> q
-        return Vec4(naive_ ? 1.0f / (1.0f / a) : a, zero, zero, zero);
-    default:  // lower_ffma32: GLSL's fma is a * b + c, two roundings (glsl::fma)
-        if (naive_)
-            return Vec4(simd::fmuladd(a, b, c), simd::fmuladd(colour.x, diff.x, d), simd::fmuladd(colour.y, diff.y, d),
-                        simd::fmuladd(colour.z, diff.z, d));
-        return Vec4(fma(a, b, c), fma(colour, diff, Vec3(d)));
     }
 }
 
