@@ -4,6 +4,7 @@
 #include "image/image_io.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -85,7 +86,7 @@ void write_png_bytes(const std::string& path, int width, int height, int channel
     });
 }
 
-Image read_image(const std::string& path, Metadata* metadata) {
+Image read_image(const std::string& path, Metadata* metadata, ImageFileFormat* format) {
     // libpng prints its errors itself before OpenImageIO reports them: hold
     // that back, so that a refused image gets one line, and ours.
     StderrCapture library_chatter;
@@ -101,8 +102,15 @@ Image read_image(const std::string& path, Metadata* metadata) {
     std::string error;
     if (!image_library().read(path, kMaxImageSide, image.width, image.height, image.rgba, attributes, error))
         throw refuse(error);
+    const std::string ours = "shadertwin:";
     if (metadata)
-        for (const auto& [name, value] : attributes) (*metadata)[name.substr(11)] = value;  // without "shadertwin:"
+        for (const auto& [name, value] : attributes)
+            if (name.rfind(ours, 0) == 0) (*metadata)[name.substr(ours.size())] = value;
+    if (format) {
+        format->pixel_type = attributes["file:pixel_type"];
+        format->channels = std::atoi(attributes["file:channels"].c_str());
+        format->colour_space = attributes["file:colour_space"];
+    }
     return image;
 }
 

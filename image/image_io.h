@@ -25,9 +25,19 @@ void write_png_bytes(const std::string& path, int width, int height, int channel
 // read_image refuses a file whose header claims more than this on a side
 // (the largest scene is 8192 a side), before allocating for it.
 inline constexpr int kMaxImageSide = 8192;
-// Reads any image OpenImageIO reads as float RGBA (missing alpha = 1).
+// What an image file held before read_image made float RGBA of it.
+struct ImageFileFormat {
+    std::string pixel_type;    // OpenImageIO's: "uint8", "uint16", "half", "float", ...
+    int channels = 4;          // 1 grey, 2 grey and alpha, 3 RGB, 4 RGBA, or more
+    std::string colour_space;  // as the file (or its format) says; often empty
+    bool integer_pixels() const { return pixel_type.rfind("uint", 0) == 0 || pixel_type.rfind("int", 0) == 0; }
+};
+
+// Reads any image OpenImageIO reads as float RGBA (missing channels 0,
+// missing alpha 1), rows top to bottom, the values as stored (colour not
+// multiplied by alpha); integer pixels are scaled to [0, 1].
 // Throws std::runtime_error with one line on failure.
-Image read_image(const std::string& path, Metadata* metadata = nullptr);
+Image read_image(const std::string& path, Metadata* metadata = nullptr, ImageFileFormat* format = nullptr);
 
 // Writes text through a temporary file and rename, with the process's
 // provenance line in the file's syntax (file_provenance.h).

@@ -34,7 +34,11 @@ public:
 
     // Reads any image the library reads, refusing (before allocating) a
     // header beyond max_side pixels a side or 64 channels; RGBA floats out,
-    // missing alpha 1, and the string attributes named "shadertwin:*".
+    // as stored (a PNG's colour not multiplied by its alpha),
+    // missing alpha 1, the string attributes named "shadertwin:*", and what
+    // the file held: "file:pixel_type" (OpenImageIO's name: uint8, uint16,
+    // half, float, ...), "file:channels" and "file:colour_space" (its
+    // oiio:ColorSpace, often empty).
     // False when it cannot, with the library's words in `error` (which may
     // be empty: a decoder may have said it on stderr instead).
     virtual bool read(const std::string& path, int max_side, int& width, int& height, std::vector<float>& rgba,
@@ -50,7 +54,7 @@ public:
 const ImageLibrary& image_library();
 
 // Bumped whenever ImageLibrary changes: a module of another version is refused.
-inline constexpr int kImageLibraryVersion = 2;
+inline constexpr int kImageLibraryVersion = 3;
 
 }  // namespace st
 

@@ -14,7 +14,12 @@ class OiioLibrary final : public ImageLibrary {
 public:
     bool read(const std::string& path, int max_side, int& width, int& height, std::vector<float>& rgba,
               std::map<std::string, std::string>& attributes, std::string& error) const override {
-        auto in = OIIO::ImageInput::open(path);
+        // The values as stored: OpenImageIO would multiply a PNG's colour
+        // by its alpha on reading (associated alpha), which a texture
+        // uploaded as stored, or a diff of two files, must not see.
+        OIIO::ImageSpec config;
+        config.attribute("oiio:UnassociatedAlpha", 1);
+        auto in = OIIO::ImageInput::open(path, &config);
         if (!in) {
             error = OIIO::geterror();
             return false;
@@ -50,6 +55,11 @@ public:
             const std::string name = attr.name().string();
             if (name.rfind("shadertwin:", 0) == 0) attributes[name] = attr.get_string();
         }
+        // What the file holds, for a reader that decodes it (a texture's
+        // colour space): "file:" is not a prefix any file attribute has.
+        attributes["file:pixel_type"] = spec.format.c_str();
+        attributes["file:channels"] = std::to_string(spec.nchannels);
+        attributes["file:colour_space"] = spec.get_string_attribute("oiio:ColorSpace");
         in->close();
         return true;
     }

@@ -287,7 +287,22 @@ std::vector<double> JsonReader::numbers(const std::string& key) {
 std::string JsonReader::text(const std::string& key) {
     const FieldSpec& f = spec(key);
     expect_type(f, FieldType::Text, field(key));
+    if (f.max_len) throw std::logic_error("field '" + field(key) + "' is a list of strings: read it with texts()");
     return has(key) ? string(key) : declared_default(f, field(key)).get<std::string>();
+}
+
+std::vector<std::string> JsonReader::texts(const std::string& key) {
+    const FieldSpec& f = spec(key);
+    expect_type(f, FieldType::Text, field(key));
+    if (!f.max_len) throw std::logic_error("field '" + field(key) + "' is one string: read it with text()");
+    if (!has(key)) return declared_default(f, field(key)).get<std::vector<std::string>>();
+    const nlohmann::json& v = array(key, f.min_len, f.max_len);
+    std::vector<std::string> out;
+    for (size_t i = 0; i < v.size(); ++i) {
+        if (!v[i].is_string()) throw InputError("field '" + field(key) + "." + std::to_string(i) + "' must be a string");
+        out.push_back(v[i].get<std::string>());
+    }
+    return out;
 }
 
 void JsonReader::finish() const {

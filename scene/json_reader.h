@@ -50,6 +50,7 @@ public:
     std::string choice(const std::string& key);
     std::vector<double> numbers(const std::string& key);
     std::string text(const std::string& key);
+    std::vector<std::string> texts(const std::string& key);
     // A declared field whose bounds are other fields' values (the spec's
     // at_least/at_most): [lo, hi] as those values are, within the domain.
     double number_in(const std::string& key, double lo, double hi);

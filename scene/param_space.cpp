@@ -56,7 +56,10 @@ std::string FieldSpec::type_text() const {
                                                     : std::to_string(min_len) + " to " + std::to_string(max_len) + " numbers";
         return rows ? std::to_string(rows) + " arrays of " + each : each;
     }
-    case FieldType::Text: return "string";
+    case FieldType::Text:
+        if (!max_len) return "string";
+        return min_len == max_len ? std::to_string(min_len) + " strings"
+                                  : std::to_string(min_len) + " to " + std::to_string(max_len) + " strings";
     case FieldType::Object: return max_len ? "array of objects" : "object";
     }
     return "?";
@@ -167,6 +170,13 @@ FieldSpec& ParamSpace::text(std::string path, nlohmann::json fallback, std::stri
     if (!f.required) f.fallback = std::move(fallback);
     f.meaning = std::move(meaning), f.explore = false;
     return add(std::move(f));
+}
+
+FieldSpec& ParamSpace::texts(std::string path, size_t min_len, size_t max_len, nlohmann::json fallback,
+                             std::string meaning) {
+    FieldSpec& f = text(std::move(path), std::move(fallback), std::move(meaning));
+    f.min_len = min_len, f.max_len = max_len;
+    return f;
 }
 
 FieldSpec& ParamSpace::object(std::string path, bool required, std::string meaning, size_t min_len, size_t max_len) {

@@ -88,6 +88,11 @@ struct FieldSpec {
     bool integers = false;
     bool if_present = false;
     FieldSpec& listed(size_t lo_, size_t hi_) { min_len = lo_, max_len = hi_; return *this; }
+    // A file's path (Text, or a list of them): relative to the scene
+    // file's folder, which resolve_scene_paths() (scene/scene.h) puts in
+    // front of it before the scene is read.
+    FieldSpec& file_path() { is_file_path = true; return *this; }
+    bool is_file_path = false;
 
     // The domain as docs and error messages say it: "1..512", "[0, 89]",
     // "one of a, b", "3 numbers in [-1e6, 1e6]".
@@ -118,6 +123,8 @@ public:
     FieldSpec& numbers(std::string path, size_t min_len, size_t max_len, double lo, double hi,
                        nlohmann::json fallback, std::string meaning);
     FieldSpec& text(std::string path, nlohmann::json fallback, std::string meaning);
+    // A list of min_len..max_len strings (a cube map's six files).
+    FieldSpec& texts(std::string path, size_t min_len, size_t max_len, nlohmann::json fallback, std::string meaning);
     // An object, or an array of objects with min_len..max_len entries
     // (max_len 0: one object). Its own fields are declared under its path.
     FieldSpec& object(std::string path, bool required, std::string meaning, size_t min_len = 0, size_t max_len = 0);

@@ -138,9 +138,41 @@ Scene load_scene(const std::string& name_or_path, const std::vector<std::string>
     if (document.is_discarded()) throw InputError(path.string() + ": malformed JSON");
     if (!document.is_object()) throw InputError(path.string() + ": a scene must be a JSON object");
     for (const std::string& o : overrides) apply_override(document, o);
+    resolve_scene_paths(document, path.parent_path().string());
     Scene scene = load_scene_document(path.stem().string(), std::move(document), path.string());
     scene.golden_file = golden;
     return scene;
+}
+
+void resolve_scene_paths(nlohmann::json& document, const std::string& folder) {
+    if (folder.empty() || !document.is_object() || !document.contains("kind") || !document["kind"].is_string()) return;
+    const ParamSpace* space = kind_space(document["kind"].get<std::string>());
+    if (!space) return;
+    const auto resolve = [&](nlohmann::json& v) {
+        if (!v.is_string()) return;  // the reader refuses it, naming the field
+        const fs::path p = v.get<std::string>();
+        if (!p.empty() && p.is_relative()) v = (fs::path(folder) / p).lexically_normal().string();
+    };
+    const auto walk = [&](auto& self, nlohmann::json& node, const std::string& path) -> void {
+        if (node.is_array()) {
+            for (size_t i = 0; i < node.size(); ++i) self(self, node[i], path + "." + std::to_string(i));
+            return;
+        }
+        if (!node.is_object()) return;
+        for (auto it = node.begin(); it != node.end(); ++it) {
+            const std::string p = path.empty() ? it.key() : path + "." + it.key();
+            const FieldSpec* f = space->find(ParamSpace::normalise(p));
+            if (f && f->is_file_path) {
+                if (it->is_array())
+                    for (auto& e : *it) resolve(e);
+                else
+                    resolve(*it);
+            } else if (!f || !f->opaque) {
+                self(self, *it, p);
+            }
+        }
+    };
+    walk(walk, document, "");
 }
 
 void set_quality_resolver(QualityResolver resolver) { quality_resolver() = std::move(resolver); }

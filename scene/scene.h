@@ -34,6 +34,13 @@ Scene load_scene(const std::string& name_or_path, const std::vector<std::string>
 // its errors (the file's path; none when empty).
 Scene load_scene_document(const std::string& name, nlohmann::json document, const std::string& where);
 
+// Puts `folder` in front of every relative file path the document's kind
+// declares (FieldSpec::file_path: a texture's `file`, a cube's `files`),
+// so that a scene reads the images beside it wherever it is run from, and
+// a document copied elsewhere (an explorer's reproducer) still finds them.
+// load_scene does it for a scene file; an empty folder changes nothing.
+void resolve_scene_paths(nlohmann::json& document, const std::string& folder);
+
 // A scene's top-level "quality" field ("auto": the cheapest settings within
 // an image-error budget, app/profile_quality.h) is resolved by measuring,
 // which needs renderers this layer does not know: the app sets a resolver,

@@ -25,19 +25,46 @@ ParamSpace pattern_texture_fields(bool render_targets) {
         s.text("target", nullptr,
                "the texture is this render target as earlier passes left it; then only the filter, wrap and LOD "
                "fields apply");
-    // A generated pattern (no `target`):
+    // A generated pattern or image files (no `target`):
+    s.choice("pattern", {"checker", "noise", "file"}, "noise",
+             "4x4-texel checks, hashed texels with alpha in [0.5, 1), or image files (`file`, or `files` for a cube)")
+        .explore_choices({"checker", "noise"});  // a file it cannot make up
+    const std::vector<std::string> generated = {"checker", "noise"};
     s.integer("width", 1, 4096, "required",
               "texels across (a scene's textures hold at most 1 GiB, levels and faces included)")
         .explore_at_most(1024)
-        .edge({1, 2, 3, 64, 65});
+        .edge({1, 2, 3, 64, 65})
+        .when("pattern", generated);
     s.integer("height", 1, 4096, "required", "texels up (a cube's faces are square)").explore_at_most(1024)
-        .edge({1, 2, 3, 64, 65});
+        .edge({1, 2, 3, 64, 65})
+        .when("pattern", generated);
     s.boolean("cube", false, "six square faces, sampled with seamless filtering (min and mag filter alike)")
         .not_explored();  // the program's sampler type (sampler2D or samplerCube) decides it
-    s.choice("pattern", {"checker", "noise"}, "noise", "4x4-texel checks, or hashed texels with alpha in [0.5, 1)");
-    s.integer("seed", 0, 1 << 30, 1, "the noise's hash seed");
+    s.integer("seed", 0, 1 << 30, 1, "the noise's hash seed").when("pattern", generated);
+    s.text("file", nullptr,
+           "a 2D texture's image (PNG, EXR, HDR, JPEG, TIFF: whatever OpenImageIO reads), relative to the scene "
+           "file's folder; its size is the texture's, at most 4096 a side; values as stored (an 8- or 16-bit file's "
+           "exact fractions, colour not multiplied by alpha), grey in red, green and blue, a missing alpha 1")
+        .when("pattern", {"file"})
+        .file_path();
+    s.texts("files", 6, 6, nullptr,
+            "a cube map's six faces in GL's order +x, -x, +y, -y, +z, -z (`cube` true), square and of one size, "
+            "each relative to the scene file's folder")
+        .when("pattern", {"file"})
+        .file_path();
+    s.choice("colour_space", {"auto", "srgb", "linear"}, "auto",
+             "the files' encoding: `srgb` is decoded to linear on load (IEC 61966-2-1, alpha as stored), as an asset "
+             "pipeline does, and the texture holds linear values in `format`; `linear` is taken as stored; `auto` is "
+             "what the file says it is, else sRGB for integer pixels (PNG, JPEG) and linear for float ones (EXR, "
+             "HDR). (An sRGB texture format, decoded by the sampler per texel, is not modelled.)")
+        .when("pattern", {"file"});
+    s.choice("orientation", {"upright", "as_stored"}, "upright",
+             "`upright`: a 2D texture's t = 1 is the picture's top row (the rows are flipped on upload, as OpenGL "
+             "programs that load images do); `as_stored`: the file's first row is t near 0. Cube faces are uploaded "
+             "as stored either way (GL's faces run top row first)")
+        .when("pattern", {"file"});
     s.choice("mipmaps", {"none", "box", "distinct"}, "none",
-             "mip levels: none, a box filter of level 0, or each level its own pattern");
+             "mip levels: none, a box filter of level 0, or each level its own pattern (not for files)");
     s.integer("levels", 1, 13, nullptr, "mip levels, at most the full chain of width x height (default: all of it)")
         .when("mipmaps", {"box", "distinct"}).edge({1, 2});
     return s;

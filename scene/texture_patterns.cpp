@@ -7,6 +7,7 @@
 
 #include "scene/input_error.h"
 #include "scene/param_space.h"
+#include "scene/texture_files.h"
 #include "texture/mip_generation.h"
 
 namespace st {
@@ -109,30 +110,40 @@ Texture read_pattern_texture(JsonReader& r, const std::string& sampler, TexelBud
         r.finish();
         return t;
     }
-    t.width = r.integer("width");
-    t.height = r.integer("height");
-    t.cube = r.boolean("cube");
-    if (t.cube && t.width != t.height)
-        throw InputError("field '" + r.field("height") + "': a cube map's faces must be square (width " +
-                         std::to_string(t.width) + ", height " + std::to_string(t.height) + ")");
+    const std::string pattern = r.choice("pattern");
+    const bool from_files = pattern == "file";
+    if (from_files) {
+        read_texture_files(r, t, budget);  // size, faces and level 0
+    } else {
+        t.width = r.integer("width");
+        t.height = r.integer("height");
+        t.cube = r.boolean("cube");
+        if (t.cube && t.width != t.height)
+            throw InputError("field '" + r.field("height") + "': a cube map's faces must be square (width " +
+                             std::to_string(t.width) + ", height " + std::to_string(t.height) + ")");
+    }
     if (t.cube && t.min_filter != t.mag_filter)
         throw InputError("field '" + r.field("mag_filter") +
                          "': a cube map needs the same min and mag filter (the switch is not modelled)");
-    const bool checker = r.choice("pattern") == "checker";
-    const auto seed = uint32_t(r.integer("seed"));
     // Mip levels: none, a box filter of level 0 ("box"), or each level its
     // own pattern ("distinct", seeded per level), which shows in every texel
     // which level a sample took.
     const std::string mipmaps = r.choice("mipmaps");
+    if (from_files && mipmaps == "distinct")
+        throw InputError("field '" + r.field("mipmaps") + "': `distinct` levels are generated patterns; a file's "
+                         "chain is `box` (or `none`)");
     const int full = full_chain_levels(t.width, t.height);
     const int levels = mipmaps == "none" ? 1 : r.has("levels") ? r.integer_in("levels", 1, full) : full;
-    // (Float formats are held as four floats a texel, RGBA8 as four bytes.)
+    // (Float formats are held as four floats a texel, RGBA8 as four bytes;
+    // a file's level 0 is already taken.)
     uint64_t bytes = 0;
-    for (int level = 0; level < levels; ++level)
+    for (int level = from_files ? 1 : 0; level < levels; ++level)
         bytes += uint64_t(std::max(1, t.width >> level)) * uint64_t(std::max(1, t.height >> level)) *
                  uint64_t(t.faces()) * (t.format == TextureFormat::RGBA8 ? 4u : 16u);
-    budget.take(bytes, r.field("width"));
-    fill_faces(t, t.width, t.height, checker, seed, t.texels8, t.texels32);
+    budget.take(bytes, r.field(from_files ? "mipmaps" : "width"));
+    const bool checker = pattern == "checker";
+    const auto seed = from_files ? 0u : uint32_t(r.integer("seed"));
+    if (!from_files) fill_faces(t, t.width, t.height, checker, seed, t.texels8, t.texels32);
     if (mipmaps == "box") generate_box_mips(t, levels);
     if (mipmaps == "distinct")
         for (int level = 1; level < levels; ++level) {

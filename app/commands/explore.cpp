@@ -91,6 +91,8 @@ std::map<std::string, std::vector<Base>> bases_of(const std::vector<std::string>
             const std::string kind = document_kind(doc, path);
             if (!kind_space(kind)) throw InputError("explore: scene kind '" + kind + "' (" + name + ") declares no parameter space");
             for (const std::string& o : overrides) apply_override(doc, o);
+            // Absolute, so that a reproducer written anywhere finds them.
+            resolve_scene_paths(doc, fs::absolute(path).parent_path().string());
             out[kind].push_back({name, std::move(doc)});
         }
     }
