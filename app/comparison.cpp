@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "app/tool_data.h"
+#include "kernels/registry.h"
 #include "image/image_io.h"
 
 namespace st {
@@ -29,6 +30,23 @@ std::string write_rendered(const std::string& dir, const std::string& scene, Bac
 }
 
 namespace {
+
+// The twins the frame draws with that are still new-technique's skeleton,
+// one failure line each (once per twin).
+std::vector<std::string> unwritten_twins(const Frame& frame) {
+    std::vector<std::string> out, seen;
+    const auto note = [&](const std::string& stage, const char* unwritten) {
+        if (!unwritten || std::find(seen.begin(), seen.end(), stage) != seen.end()) return;
+        seen.push_back(stage);
+        out.push_back("twin of " + stage + " not written yet: " + unwritten);
+    };
+    for (const Pass& pass : frame.passes)
+        for (const DrawCall& draw : pass.draws) {
+            if (const auto v = make_vertex_twin(draw.vertex)) note(draw.vertex + ".vert", v->unwritten());
+            if (const auto f = make_fragment_twin(draw.fragment)) note(draw.fragment + ".frag", f->unwritten());
+        }
+    return out;
+}
 
 // The frame with every draw's search rays perturbed by `ulps` (the twins of
 // searching programs read ulp_perturbation; GL never sees this frame).
@@ -76,6 +94,7 @@ SceneComparison compare_scene(const Scene& scene, Backends& backends, const std:
     } else {
         c.failures = scene.criteria.failures(c.metrics, c.coverage_mismatch);
     }
+    for (const std::string& u : unwritten_twins(scene.frame)) c.failures.push_back(u);
     c.cpu_ms = cpu.ms;
     c.gl_ms = gl.ms;
     c.cpu_hash = pixel_hash(cpu.image);

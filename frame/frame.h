@@ -28,12 +28,17 @@ struct VertexArray {
     const glm::vec4* vertex(int v) const { return &data[size_t(v) * attribute_count]; }
 };
 
-enum class UniformType { Float, Vec2, Vec3, Vec4, Int, Mat4 };
+// A GLSL uniform's type as glUniform* sets it. bool and bvecN are set as
+// Int and IVecN (glUniform*i); an element of an array or a member of a
+// struct is its own Uniform, named as GL names it ("lights[2]", "mat.albedo").
+enum class UniformType { Float, Vec2, Vec3, Vec4, Int, Mat4, IVec2, IVec3, IVec4, UInt, UVec2, UVec3, UVec4, Mat2, Mat3 };
 
 struct Uniform {
     std::string name;
     UniformType type = UniformType::Float;
-    std::array<float, 16> value{};  // Mat4 column-major, as glUniformMatrix4fv
+    // Matrices column-major, as glUniformMatrix*fv; integers as floats,
+    // exact up to 2^24 in magnitude (scene readers refuse larger ones).
+    std::array<float, 16> value{};
 };
 
 // Storage formats. Texels are given to both backends as RGBA8 bytes or as

@@ -34,6 +34,8 @@ namespace st {
     X(PixelStorei) X(ReadPixels) X(RenderbufferStorage) X(SamplerParameterf) X(SamplerParameteri)         \
     X(ShaderSource) X(TexParameterf) X(TexParameteri) X(TexStorage2D) X(TexSubImage2D) X(Uniform1f)         \
     X(Uniform1i) X(Uniform2f) X(Uniform3f) X(Uniform4f) X(UniformMatrix4fv) X(UseProgram)                   \
+    X(Uniform2i) X(Uniform3i) X(Uniform4i) X(Uniform1ui) X(Uniform2ui) X(Uniform3ui) X(Uniform4ui)          \
+    X(UniformMatrix2fv) X(UniformMatrix3fv)                                                                 \
     X(VertexAttribPointer) X(Viewport)
 
 // The prototypes above are only read for their types (decltype); nothing

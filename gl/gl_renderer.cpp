@@ -200,6 +200,15 @@ void set_uniform(const GlApi& gl, GLuint program, const Uniform& u) {
         case UniformType::Vec4: gl.Uniform4f(loc, v[0], v[1], v[2], v[3]); break;
         case UniformType::Int: gl.Uniform1i(loc, int(v[0])); break;
         case UniformType::Mat4: gl.UniformMatrix4fv(loc, 1, GL_FALSE, v); break;
+        case UniformType::IVec2: gl.Uniform2i(loc, int(v[0]), int(v[1])); break;
+        case UniformType::IVec3: gl.Uniform3i(loc, int(v[0]), int(v[1]), int(v[2])); break;
+        case UniformType::IVec4: gl.Uniform4i(loc, int(v[0]), int(v[1]), int(v[2]), int(v[3])); break;
+        case UniformType::UInt: gl.Uniform1ui(loc, GLuint(v[0])); break;
+        case UniformType::UVec2: gl.Uniform2ui(loc, GLuint(v[0]), GLuint(v[1])); break;
+        case UniformType::UVec3: gl.Uniform3ui(loc, GLuint(v[0]), GLuint(v[1]), GLuint(v[2])); break;
+        case UniformType::UVec4: gl.Uniform4ui(loc, GLuint(v[0]), GLuint(v[1]), GLuint(v[2]), GLuint(v[3])); break;
+        case UniformType::Mat2: gl.UniformMatrix2fv(loc, 1, GL_FALSE, v); break;
+        case UniformType::Mat3: gl.UniformMatrix3fv(loc, 1, GL_FALSE, v); break;
     }
 }
 

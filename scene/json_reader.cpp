@@ -1,6 +1,8 @@
 // json_reader.cpp: see json_reader.h.
 #include "scene/json_reader.h"
 
+#include <filesystem>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -186,8 +188,15 @@ std::vector<double> JsonReader::numbers(const std::string& key, size_t min_len, 
 // An opaque object (the criteria) is read by its own code, unbound.
 bool JsonReader::inherits(const std::string& key) const { return space_ && !spec(key).opaque; }
 
+std::string JsonReader::file_path(const std::string& path) const {
+    const std::filesystem::path p = path;
+    if (folder_.empty() || p.empty() || p.is_absolute()) return path;
+    return (std::filesystem::path(folder_) / p).lexically_normal().string();
+}
+
 JsonReader JsonReader::child(const nlohmann::json& value, bool bound, std::string path) const {
     JsonReader r(value, std::move(path));
+    r.folder_ = folder_;
     if (bound) r.space_ = space_;
     return r;
 }

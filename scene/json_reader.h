@@ -41,6 +41,11 @@ public:
     // Readers of its objects inherit it.
     void bind(const ParamSpace& space) { space_ = &space; }
     const ParamSpace* space() const { return space_; }
+    // The scene file's folder (empty: the working directory), which a
+    // relative file path in the scene is relative to; readers of its
+    // objects inherit it. file_path() resolves one.
+    void set_folder(std::string folder) { folder_ = std::move(folder); }
+    std::string file_path(const std::string& path) const;
     const FieldSpec& spec(const std::string& key) const;
     // A declared field: its value, or its default when absent (a missing
     // required field is an error naming it).
@@ -109,6 +114,7 @@ private:
     const nlohmann::json& object_;
     std::string path_;
     const ParamSpace* space_ = nullptr;
+    std::string folder_;
     std::vector<const nlohmann::json*> read_;  // the members read (an object has a handful)
 };
 

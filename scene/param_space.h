@@ -89,8 +89,9 @@ struct FieldSpec {
     bool if_present = false;
     FieldSpec& listed(size_t lo_, size_t hi_) { min_len = lo_, max_len = hi_; return *this; }
     // A file's path (Text, or a list of them): relative to the scene
-    // file's folder, which resolve_scene_paths() (scene/scene.h) puts in
-    // front of it before the scene is read.
+    // file's folder (its builder reads it with JsonReader::file_path;
+    // resolve_scene_paths() in scene/scene.h makes it absolute in a
+    // document that moves).
     FieldSpec& file_path() { is_file_path = true; return *this; }
     bool is_file_path = false;
 

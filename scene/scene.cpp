@@ -138,7 +138,6 @@ Scene load_scene(const std::string& name_or_path, const std::vector<std::string>
     if (document.is_discarded()) throw InputError(path.string() + ": malformed JSON");
     if (!document.is_object()) throw InputError(path.string() + ": a scene must be a JSON object");
     for (const std::string& o : overrides) apply_override(document, o);
-    resolve_scene_paths(document, path.parent_path().string());
     Scene scene = load_scene_document(path.stem().string(), std::move(document), path.string());
     scene.golden_file = golden;
     return scene;
@@ -187,6 +186,9 @@ Scene load_scene_document(const std::string& name, nlohmann::json document, cons
             quality_resolver()(name, scene.document);
         }
         JsonReader r(scene.document, "");
+        // Files the scene names sit beside it (a document without a file:
+        // the working directory).
+        if (!where.empty()) r.set_folder(fs::path(where).parent_path().string());
         scene.kind = r.string("kind");
         // A kind with a declared space reads every field through it.
         if (const ParamSpace* space = kind_space(scene.kind)) r.bind(*space);

@@ -36,9 +36,10 @@ Scene load_scene_document(const std::string& name, nlohmann::json document, cons
 
 // Puts `folder` in front of every relative file path the document's kind
 // declares (FieldSpec::file_path: a texture's `file`, a cube's `files`),
-// so that a scene reads the images beside it wherever it is run from, and
-// a document copied elsewhere (an explorer's reproducer) still finds them.
-// load_scene does it for a scene file; an empty folder changes nothing.
+// so that a document copied elsewhere (an explorer's reproducer) still
+// finds them. (Loading a scene file needs none of this: its builder reads
+// each path relative to the file's folder, JsonReader::file_path.) An
+// empty folder changes nothing.
 void resolve_scene_paths(nlohmann::json& document, const std::string& folder);
 
 // A scene's top-level "quality" field ("auto": the cheapest settings within

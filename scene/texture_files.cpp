@@ -77,7 +77,8 @@ void read_texture_files(JsonReader& r, Texture& t, TexelBudget& budget) {
         throw InputError("field '" + r.field("files") + "': six files make a cube map: set `cube` to true, or give one `file`");
     const std::string key = t.cube ? "files" : "file";
     if (!r.has(key)) throw InputError("missing field '" + r.field(key) + "' (pattern \"file\")");
-    const std::vector<std::string> paths = t.cube ? r.texts("files") : std::vector<std::string>{r.text("file")};
+    std::vector<std::string> paths = t.cube ? r.texts("files") : std::vector<std::string>{r.text("file")};
+    for (std::string& p : paths) p = r.file_path(p);
     const std::string field = r.field(key);
     const std::string colour_space = r.choice("colour_space");
     // A cube's faces run top row first in GL's convention (its t axis

@@ -4,9 +4,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
 
 #include "scene/input_error.h"
 #include "scene/param_space.h"
+#include "scene/scene_spaces.h"
 #include "scene/texture_files.h"
 #include "texture/mip_generation.h"
 
@@ -79,6 +83,28 @@ void TexelBudget::take(uint64_t bytes, const std::string& field) {
         throw InputError("field '" + field + "': the scene's textures would hold " +
                          std::to_string((used_ + (uint64_t(1) << 20) - 1) >> 20) + " MiB of texels, more than the " +
                          std::to_string(kBytes >> 20) + " MiB a scene's generated textures may");
+}
+
+Texture read_texture_field(JsonReader& scene, const std::string& key, const std::string& sampler,
+                           TexelBudget& budget) {
+    // One space per field path, declared the first time it is read and
+    // kept (a reader holds a pointer to it).
+    static std::mutex mutex;
+    static std::map<std::string, std::unique_ptr<ParamSpace>> spaces;
+    const std::string path = scene.field(key);
+    const ParamSpace* space = nullptr;
+    {
+        const std::lock_guard<std::mutex> lock(mutex);
+        std::unique_ptr<ParamSpace>& s = spaces[path];
+        if (!s) {
+            s = std::make_unique<ParamSpace>("texture");
+            s->include(pattern_texture_fields(false), path);
+        }
+        space = s.get();
+    }
+    JsonReader r = scene.object(key);
+    r.bind(*space);
+    return read_pattern_texture(r, sampler, budget);
 }
 
 Texture read_pattern_texture(JsonReader& r, const std::string& sampler, TexelBudget& budget) {

@@ -40,4 +40,12 @@ private:
 // the texels are taken from the scene's `budget`.
 Texture read_pattern_texture(JsonReader& r, const std::string& sampler, TexelBudget& budget);
 
+// The texture object at `key` of a scene kind that declares no space (a
+// user's technique): the same fields, domains and defaults as the built-in
+// kinds' textures (docs/scenes.md: a generated pattern or image files
+// beside the scene, filters, wraps, LOD and mips), for the GLSL sampler
+// `sampler`.
+Texture read_texture_field(JsonReader& scene, const std::string& key, const std::string& sampler,
+                           TexelBudget& budget);
+
 }  // namespace st

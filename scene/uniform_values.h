@@ -4,6 +4,10 @@
 
 #include <string>
 
+#include <type_traits>
+
+#include <glm/mat2x2.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -41,6 +45,40 @@ inline Uniform uniform(const std::string& name, const glm::vec3& v) {
 inline Uniform uniform(const std::string& name, const glm::vec4& v) {
     Uniform u{name, UniformType::Vec4, {}};
     for (int c = 0; c < 4; ++c) u.value[size_t(c)] = v[c];
+    return u;
+}
+
+// ivecN, uvecN (and bvecN, set as ivecN): integers stored as floats, exact
+// up to 2^24 in magnitude.
+template <int N, class T, glm::qualifier Q>
+inline Uniform uniform(const std::string& name, const glm::vec<N, T, Q>& v)
+    requires(std::is_integral_v<T> && N >= 2)
+{
+    constexpr bool is_signed = std::is_signed_v<T>;
+    constexpr UniformType types[2][3] = {{UniformType::UVec2, UniformType::UVec3, UniformType::UVec4},
+                                         {UniformType::IVec2, UniformType::IVec3, UniformType::IVec4}};
+    Uniform u{name, types[is_signed][N - 2], {}};
+    for (int c = 0; c < N; ++c) u.value[size_t(c)] = float(v[c]);
+    return u;
+}
+
+inline Uniform uint_uniform(const std::string& name, uint32_t v) {
+    Uniform u{name, UniformType::UInt, {}};
+    u.value[0] = float(v);
+    return u;
+}
+
+inline Uniform uniform(const std::string& name, const glm::mat2& m) {
+    Uniform u{name, UniformType::Mat2, {}};
+    for (int c = 0; c < 2; ++c)
+        for (int r = 0; r < 2; ++r) u.value[size_t(c * 2 + r)] = m[c][r];
+    return u;
+}
+
+inline Uniform uniform(const std::string& name, const glm::mat3& m) {
+    Uniform u{name, UniformType::Mat3, {}};
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) u.value[size_t(c * 3 + r)] = m[c][r];
     return u;
 }
 

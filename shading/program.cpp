@@ -52,6 +52,53 @@ glm::mat4 Bindings::get_mat4(const std::string& name) const {
     return m;
 }
 
+glm::mat3 Bindings::get_mat3(const std::string& name) const {
+    const auto& v = find(uniforms, name, UniformType::Mat3).value;
+    glm::mat3 m;
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) m[c][r] = v[size_t(c * 3 + r)];
+    return m;
+}
+
+glm::mat2 Bindings::get_mat2(const std::string& name) const {
+    const auto& v = find(uniforms, name, UniformType::Mat2).value;
+    return glm::mat2(v[0], v[1], v[2], v[3]);
+}
+
+glm::ivec2 Bindings::get_ivec2(const std::string& name) const {
+    const auto& v = find(uniforms, name, UniformType::IVec2).value;
+    return glm::ivec2(int(v[0]), int(v[1]));
+}
+
+glm::ivec3 Bindings::get_ivec3(const std::string& name) const {
+    const auto& v = find(uniforms, name, UniformType::IVec3).value;
+    return glm::ivec3(int(v[0]), int(v[1]), int(v[2]));
+}
+
+glm::ivec4 Bindings::get_ivec4(const std::string& name) const {
+    const auto& v = find(uniforms, name, UniformType::IVec4).value;
+    return glm::ivec4(int(v[0]), int(v[1]), int(v[2]), int(v[3]));
+}
+
+uint32_t Bindings::get_uint(const std::string& name) const {
+    return uint32_t(find(uniforms, name, UniformType::UInt).value[0]);
+}
+
+glm::uvec2 Bindings::get_uvec2(const std::string& name) const {
+    const auto& v = find(uniforms, name, UniformType::UVec2).value;
+    return glm::uvec2(uint32_t(v[0]), uint32_t(v[1]));
+}
+
+glm::uvec3 Bindings::get_uvec3(const std::string& name) const {
+    const auto& v = find(uniforms, name, UniformType::UVec3).value;
+    return glm::uvec3(uint32_t(v[0]), uint32_t(v[1]), uint32_t(v[2]));
+}
+
+glm::uvec4 Bindings::get_uvec4(const std::string& name) const {
+    const auto& v = find(uniforms, name, UniformType::UVec4).value;
+    return glm::uvec4(uint32_t(v[0]), uint32_t(v[1]), uint32_t(v[2]), uint32_t(v[3]));
+}
+
 glm::vec4 Bindings::get_vec4(const std::string& name) const {
     const auto& v = find(uniforms, name, UniformType::Vec4).value;
     return glm::vec4(v[0], v[1], v[2], v[3]);

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat2x2.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -55,6 +57,17 @@ struct Bindings {
     glm::vec3 get_vec3(const std::string& name) const;
     glm::vec4 get_vec4(const std::string& name) const;
     glm::mat4 get_mat4(const std::string& name) const;
+    glm::mat3 get_mat3(const std::string& name) const;
+    glm::mat2 get_mat2(const std::string& name) const;
+    // bool is set as an int (glUniform1i), bvecN as ivecN.
+    bool get_bool(const std::string& name) const { return get_int(name) != 0; }
+    glm::ivec2 get_ivec2(const std::string& name) const;
+    glm::ivec3 get_ivec3(const std::string& name) const;
+    glm::ivec4 get_ivec4(const std::string& name) const;
+    uint32_t get_uint(const std::string& name) const;
+    glm::uvec2 get_uvec2(const std::string& name) const;
+    glm::uvec3 get_uvec3(const std::string& name) const;
+    glm::uvec4 get_uvec4(const std::string& name) const;
     const Sampler2D& sampler(const std::string& name) const;
     const SamplerCube& sampler_cube(const std::string& name) const;
 };
@@ -67,6 +80,10 @@ public:
     // Called once per draw, before any run(): read uniforms here.
     virtual void bind(const Bindings&) {}
     virtual void run(const glm::vec4* attributes, VertexOut& out) const = 0;
+    // Non-null while the twin is still the skeleton `shadertwin
+    // new-technique` wrote: what is left to write. `compare` fails every
+    // scene that draws with it, saying so.
+    virtual const char* unwritten() const { return nullptr; }
 };
 
 // The fragments a fragment twin shades at once: kLanes lanes, that is
@@ -106,6 +123,8 @@ public:
     // shader uses, and fills the others with NaN, so that a component read
     // but not declared shows in every comparison.
     virtual uint32_t inputs_read() const { return ~0u; }
+    // As VertexTwin::unwritten().
+    virtual const char* unwritten() const { return nullptr; }
 };
 
 // What a twin's main() reads: the inputs of every lane at once, and the
