@@ -12,6 +12,7 @@
 
 #include "app/commands.h"
 #include "app/commands/explore.h"
+#include "app/commands/new_technique.h"
 #include "app/commands/probe.h"
 #include "app/commands/fields.h"
 #include "app/error_line.h"
@@ -333,6 +334,16 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     probe->add_flag("--json", probe_json, "one JSON object: each probe run, and the first that differs");
     add_common(probe, common, gl_given);
 
+    std::string technique_name, technique_vert, technique_frag, technique_out;
+    auto* new_technique = app.add_subcommand(
+        "new-technique", "a project for your own shader pair: the twins written up to their bodies (every uniform, "
+                         "slot and sampler), a scene kind, one scene and the CMake lines; it builds against this "
+                         "install, and compare fails, saying what is left to write, until the bodies are written");
+    new_technique->add_option("name", technique_name, "the technique's name, a lower-case C identifier")->required();
+    new_technique->add_option("vert", technique_vert, "the vertex shader (GLSL 3.30 or later)")->required();
+    new_technique->add_option("frag", technique_frag, "the fragment shader")->required();
+    new_technique->add_option("--out", technique_out, "the project folder, new or empty (default: ./NAME)");
+
     std::vector<std::string> field_kinds;
     auto* fields = app.add_subcommand("fields", "each scene kind's fields, types, domains and defaults (Markdown)");
     fields->add_option("kinds", field_kinds, "scene kinds; default: every kind with a declared space");
@@ -395,6 +406,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
         if (*explore) return st::cmd_explore(explore_options, common);
         if (*probe) return st::cmd_probe(probe_scene, probe_json, common);
         if (*fields) return st::cmd_fields(field_kinds);
+        if (*new_technique) return st::cmd_new_technique(technique_name, technique_vert, technique_frag, technique_out);
         if (*bench) return st::cmd_bench(scenes, frames, json, scaling, per_pass, common);
         if (*sweep) {
             if (technique == "relief") return st::cmd_sweep_relief(out_dir, sweep_frames, common);

@@ -84,6 +84,9 @@ public:
     // The same, one object at a time: for arrays as long as a mesh's
     // triangles, whose readers need not all exist at once.
     template <class Visit> void for_each_object(const std::string& key, size_t min_len, size_t max_len, Visit&& visit);
+    // The raw value at `key` (marked as read; InputError when missing), for
+    // a field whose shape its reader checks (scene/uniform_fields.h).
+    const nlohmann::json& raw(const std::string& key) { return get(key); }
     // The raw array at `key` (marked as read), for arrays of arrays.
     const nlohmann::json& array(const std::string& key, size_t min_len, size_t max_len);
 

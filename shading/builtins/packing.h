@@ -127,12 +127,12 @@ ST_INLINE void set_lane(Vec4& v, int l, const glm::vec4& g) {
 
 #define ST_GLSL_PACK_LANES(name, V)                                                                 \
     ST_INLINE UInt name(const V& v) {                                                              \
-        return packing_detail::per_lane<UInt>([&](int l) { return name(packing_detail::lane(v, l)); }); \
+        return packing_detail::per_lane<UInt>([&](int l) { return ::st::glsl::name(packing_detail::lane(v, l)); }); \
     }
 #define ST_GLSL_UNPACK_LANES(name, V)                                                               \
     ST_INLINE V name(UInt p) {                                                                     \
         V r;                                                                                       \
-        for (int l = 0; l < kLanes; ++l) packing_detail::set_lane(r, l, name(p[l]));               \
+        for (int l = 0; l < kLanes; ++l) packing_detail::set_lane(r, l, ::st::glsl::name(p[l]));   \
         return r;                                                                                  \
     }
 ST_GLSL_PACK_LANES(packUnorm2x16, Vec2)

@@ -1,0 +1,73 @@
+// glsl_declarations.h: what one GLSL stage declares at global scope, read
+// from its source for `shadertwin new-technique` (skeleton_files.h writes
+// the twin from it): inputs and outputs with their locations, interface
+// blocks, uniforms of every type (samplers, matrices, arrays, structs),
+// constants, and each function with its body as written.
+//
+// It reads declarations, not expressions: comments and preprocessor lines
+// are skipped (an object-like #define of a whole number is kept, for array
+// sizes), and a function body is kept as text. GLSL it cannot place (a
+// declaration it does not understand) is refused with the file, the line
+// and what it saw, never guessed at.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace st::skeleton {
+
+struct GlslVariable {
+    std::string type;        // "vec3", "mat4", "sampler2D", or a struct's name
+    std::string name;
+    int array_size = 0;      // 0: not an array
+    int location = -1;       // layout(location = N); -1 when not given
+    std::vector<std::string> qualifiers;  // flat, noperspective, highp, ...
+    std::string initialiser;  // a constant's, as written
+    int line = 0;
+};
+
+struct GlslStruct {
+    std::string name;
+    std::vector<GlslVariable> members;
+};
+
+// `in Block { ... } instance;` and the like. Its members are the stage's
+// inputs (outputs, uniforms) named instance.member (or member when there
+// is no instance name), as GL names them.
+struct GlslBlock {
+    std::string storage;  // in, out, uniform, buffer
+    std::string name;     // the block's name
+    std::string instance; // may be empty
+    int array_size = 0;
+    int location = -1;
+    std::vector<GlslVariable> members;
+    int line = 0;
+};
+
+struct GlslFunction {
+    std::string return_type, name;
+    std::string parameters;  // as written, between the parentheses
+    std::string body;        // as written, braces included
+    int line = 0;
+};
+
+struct GlslStage {
+    std::string path;
+    std::string version;  // "450 core"
+    std::vector<GlslVariable> inputs, outputs, uniforms, constants, globals;
+    std::vector<GlslStruct> structs;
+    std::vector<GlslBlock> blocks;
+    std::vector<GlslFunction> functions;  // in source order, main among them
+    std::map<std::string, int> defines;   // object-like #defines of whole numbers
+
+    const GlslFunction* function(const std::string& name) const;
+    const GlslStruct* struct_named(const std::string& name) const;
+};
+
+// Throws InputError: "PATH:LINE: what is wrong" (a file it cannot read:
+// "cannot read PATH").
+GlslStage parse_glsl_stage(const std::string& source, const std::string& path);
+GlslStage read_glsl_stage(const std::string& path);
+
+}  // namespace st::skeleton
