@@ -780,6 +780,33 @@ PY
     expect_refused_without_out "a scene without probes" "ST_PROBE" "$bin" probe conformance-rewrite-factor
     ;;
 
+  new_technique)
+    # shadertwin new-technique writes a project for a shader pair (the
+    # example's), refuses an out folder in use, a bad name and an interface
+    # twins cannot have, each with one line and nothing written. (sdk.example
+    # builds such a project against an install and runs its compare.)
+    ex="$(dirname "$0")/../examples/wrap_lighting/glsl"
+    "$bin" new-technique wrapsk "$ex/wrap.vert" "$ex/wrap.frag" --out "$work/nt" >"$work/nt.txt" ||
+      fail "new-technique: $(cat "$work/nt.txt")"
+    [ "$(find "$work/nt" -type f | wc -l)" -eq 9 ] || fail "new-technique wrote $(find "$work/nt" -type f | wc -l) files, not 9"
+    grep -q "^wrote .*/nt/ (9 files)" "$work/nt.txt" || fail "new-technique's summary: $(cat "$work/nt.txt")"
+    cmp -s "$ex/wrap.frag" "$work/nt/glsl/wrapsk.frag" || fail "the fragment shader was not copied as it is"
+    python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert d["kind"]=="wrapsk" and d["mvp"]=="identity", d' \
+      "$work/nt/scenes/wrapsk-first.json" || fail "the first scene"
+    echo "ok   new-technique wrote $(sed -n 's/^wrote \([^:]*\):.*/\1/p' "$work/nt.txt")"
+    expect_refused_without_out "an out folder in use" "exists and is not an empty folder" \
+      "$bin" new-technique wrapsk "$ex/wrap.vert" "$ex/wrap.frag" --out "$work/nt"
+    expect_refused "a name that is a built-in twin's" "already has a twin of that name" \
+      "$bin" new-technique interp "$ex/wrap.vert" "$ex/wrap.frag"
+    expect_refused "a name that is no identifier" "lower-case C identifier" \
+      "$bin" new-technique Wrap-It "$ex/wrap.vert" "$ex/wrap.frag"
+    printf '#version 450\nlayout(location = 0) out vec4 c;\nlayout(std140) uniform M { vec4 tint; };\nvoid main() { c = tint; }\n' \
+      >"$work/block.frag"
+    expect_refused "a uniform block" "block.frag:3: uniform block 'M'" \
+      "$bin" new-technique blk "$ex/wrap.vert" "$work/block.frag"
+    expect_refused "a shader that is not there" "cannot read" "$bin" new-technique gone "$ex/wrap.vert" "$work/none.frag"
+    ;;
+
   scene_docs)
     # docs/scenes.md holds each kind's field table as its space declares it.
     bash "$(dirname "$0")/../scripts/update-scene-docs.sh" "$bin" --check

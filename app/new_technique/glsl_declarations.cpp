@@ -310,6 +310,7 @@ private:
         b.storage = storage_of(qualifiers, line, *this);
         if (b.storage.empty() || k + 1 != brace) refuse(line, "expected a block: in, out or uniform, its name, then '{'");
         b.name = at(k).text;
+        if (b.storage == "buffer") refuse(line, "buffer block '" + b.name + "': shader storage is not modelled");
         if (const auto l = layout.find("location"); l != layout.end() && whole_number(l->second)) b.location = std::stoi(l->second);
         const size_t close = after_matching(brace) - 1;
         b.members = members(brace + 1, close);

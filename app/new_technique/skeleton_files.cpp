@@ -31,7 +31,8 @@ struct Attribute {
 struct Varying {
     std::string vertex_name;    // as the vertex GLSL writes it: "v_uv", "vs_out.uv"
     std::string fragment_name;  // as the fragment GLSL reads it
-    std::string constant;       // the twins' slot constant: "v_uv", "vs_out_uv"
+    std::string constant;       // the vertex twin's slot constant: "v_uv", "vs_out_uv"
+    std::string fragment_constant;  // the fragment twin's: "v_uv", "fs_in_uv"
     std::string type;
     int slot = 0;
 };
@@ -168,6 +169,7 @@ Interface interface_of(const GlslStage& vert, const GlslStage& frag) {
         if (components(v.type) != components(match->type))
             refuse(frag, v.line, "input " + v.type + " " + v.name + " meets output " + match->type + " " + match->vertex_name);
         match->fragment_name = v.name;
+        match->fragment_constant = constant_name(v.name);
     }
     // One vec4 out (location 0).
     if (frag.outputs.size() != 1 || frag.outputs[0].type != "vec4" || frag.outputs[0].location > 0 || frag.outputs[0].array_size)
@@ -374,7 +376,7 @@ std::string fragment_file(const Names& n, const Interface& in, const GlslStage& 
     for (const Varying& y : in.varyings)
         if (!y.fragment_name.empty()) {
             read.push_back(&y);
-            o << "constexpr int " << y.constant << " = " << y.slot << ";  // in " << y.type << " " << y.fragment_name << "\n";
+            o << "constexpr int " << y.fragment_constant << " = " << y.slot << ";  // in " << y.type << " " << y.fragment_name << "\n";
         }
     o << "}  // namespace\n";
     other_functions(frag, "lanes (Float, Vec2 ... Vec4, Mat3)", o);
@@ -382,19 +384,20 @@ std::string fragment_file(const Names& n, const Interface& in, const GlslStage& 
     o << "\n// Every component of every input; narrow it to what main() reads.\nuint32_t " << n.fragment_class << "::inputs_read() const { return ";
     if (read.empty()) o << "0";
     for (size_t i = 0; i < read.size(); ++i)
-        o << (i ? " | " : "") << "st::reads(" << read[i]->constant << ", \"" << swizzle(components(read[i]->type)) << "\")";
+        o << (i ? " | " : "") << "st::reads(" << read[i]->fragment_constant << ", \"" << swizzle(components(read[i]->type)) << "\")";
     o << "; }\n\nst::Vec4 " << n.fragment_class << "::main(const st::Fragment& frag) const {\n"
       << "    using namespace st;\n    using namespace st::glsl;\n"
       << "    // The GLSL's names, as the twin reads them:\n";
     for (const Varying* y : read) {
         const int c = components(y->type);
-        o << "    //   " << y->fragment_name << "  ->  " << lane_type(c) << " " << y->constant << "_in = frag.varying("
-          << y->constant << ")" << (c == 4 ? "" : c == 1 ? ".x" : std::string(".") + swizzle(c) + "()") << ";\n";
+        o << "    //   " << y->fragment_name << "  ->  frag.varying(" << y->fragment_constant << ")" << (c == 4 ? "" : c == 1 ? ".x" : std::string(".") + swizzle(c) + "()") << ";\n";
     }
     for (const GlslVariable& u : in.fragment_uniforms) {
+        const std::string at = u.array_size ? "[i]" : "";
         if (is_sampler(u.type)) o << "    //   texture(" << u.name << ", p)  ->  texture(*" << u.name << "_, p)\n";
-        else if (components(u.type)) o << "    //   " << u.name << "  ->  " << lane_type(components(u.type)) << "(" << u.name << "_)\n";
-        else o << "    //   " << u.name << "  ->  " << u.name << "_ (" << member_type(u.type) << ")\n";
+        else if (components(u.type))
+            o << "    //   " << u.name << at << "  ->  " << lane_type(components(u.type)) << "(" << u.name << "_" << at << ")\n";
+        else o << "    //   " << u.name << at << "  ->  " << u.name << "_" << at << " (" << member_type(u.type) << "; Vec3(v) makes lanes of a glm::vec3 v)\n";
     }
     o << "    //   gl_FragCoord  ->  frag.frag_coord();  discard, loops, ifs that assign: frag.exec()\n"
       << "    // GLSL main(), to write here (its output is the value returned):\n    //\n"
@@ -497,59 +500,60 @@ std::string scene_file(const Names& n, const Interface& in) {
     return o.str();
 }
 
-// A first value for a uniform in the scene file.
-nlohmann::json default_value(const Interface& in, const GlslVariable& u) {
+// A first value for a uniform in the scene file (each texture its own seed).
+nlohmann::ordered_json default_value(const Interface& in, const GlslVariable& u, int& seed) {
     const GlslStruct* st = nullptr;
     for (const GlslStruct& s : in.structs)
         if (s.name == u.type) st = &s;
-    nlohmann::json one;
+    nlohmann::ordered_json one;
     std::string n = u.name;
     std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     const int c = components(u.type);
     if (st) {
-        one = nlohmann::json::object();
-        for (const GlslVariable& m : st->members) one[m.name] = default_value(in, m);
+        one = nlohmann::ordered_json::object();
+        for (const GlslVariable& m : st->members) one[m.name] = default_value(in, m, seed);
     } else if (u.type == "sampler2D") {
-        one = {{"pattern", "noise"}, {"width", 64},     {"height", 64},          {"format", "rgba8"},
-               {"seed", 1},         {"mipmaps", "box"}, {"min_filter", "linear_mipmap_linear"}};
+        one = {{"pattern", "noise"}, {"seed", ++seed},  {"width", 64},  {"height", 64},
+               {"format", "rgba8"},  {"mipmaps", "box"}, {"min_filter", "linear_mipmap_linear"}};
     } else if (u.type == "samplerCube") {
-        one = {{"cube", true}, {"pattern", "noise"}, {"width", 16}, {"height", 16}, {"format", "rgba8"}};
+        one = {{"cube", true}, {"pattern", "noise"}, {"seed", ++seed}, {"width", 16}, {"height", 16}, {"format", "rgba8"}};
     } else if (u.type.rfind("mat", 0) == 0) {
         one = "identity";
     } else if (u.type == "bool") {
         one = false;
     } else if (u.type.rfind("bvec", 0) == 0) {
-        one = nlohmann::json::array();
+        one = nlohmann::ordered_json::array();
         for (int i = 0; i < u.type.back() - '0'; ++i) one.push_back(false);
     } else if (u.type == "int" || u.type == "uint") {
         one = 1;
     } else if (u.type.find("vec") != std::string::npos && !c) {  // ivecN, uvecN
-        one = nlohmann::json::array();
+        one = nlohmann::ordered_json::array();
         for (int i = 0; i < u.type.back() - '0'; ++i) one.push_back(1);
     } else if (c == 1) {
         one = 0.5;
     } else {
         const bool direction = n.find("dir") != std::string::npos || n.find("pos") != std::string::npos;
         const double d[4] = {0.3, 0.5, 0.8, 1.0};
-        one = nlohmann::json::array();
+        one = nlohmann::ordered_json::array();
         for (int i = 0; i < c; ++i) one.push_back(direction ? d[i] : n.find("col") != std::string::npos ? 1.0 : 0.5);
     }
     if (!u.array_size) return one;
-    nlohmann::json list = nlohmann::json::array();
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
     for (int i = 0; i < u.array_size; ++i) list.push_back(one);
     return list;
 }
 
 std::string scene_json(const Names& n, const Interface& in) {
     // One line per field, as a person writes a scene.
-    std::vector<std::pair<std::string, nlohmann::json>> fields = {
+    std::vector<std::pair<std::string, nlohmann::ordered_json>> fields = {
         {"kind", n.name},
         {"description", "The first scene of " + n.name + ", written by shadertwin new-technique: a grid of quads and "
                         "a value for each uniform. Make it one your shader was written for."},
         {"width", 128},
         {"height", 128},
         {"grid", 8}};
-    for (const GlslVariable& u : in.uniforms) fields.push_back({u.name, default_value(in, u)});
+    int seed = 0;
+    for (const GlslVariable& u : in.uniforms) fields.push_back({u.name, default_value(in, u, seed)});
     std::string out = "{\n";
     for (size_t i = 0; i < fields.size(); ++i)
         out += "  " + nlohmann::json(fields[i].first).dump() + ": " + fields[i].second.dump() + (i + 1 < fields.size() ? ",\n" : "\n");
