@@ -46,10 +46,23 @@ std::vector<std::string> probe_names(const std::string& source) {
 }
 
 std::string probe_source(const std::string& source, const std::vector<std::string>& names, const std::string& name) {
-    std::smatch output;
-    if (!std::regex_search(source, output,
-                           std::regex(R"(layout\s*\(\s*location\s*=\s*0\s*\)\s*out\s+vec4\s+([A-Za-z_][A-Za-z0-9_]*)\s*;)")))
-        throw std::runtime_error("probe: the fragment program has no 'layout(location = 0) out vec4' to write a probe to");
+    // The colour output: `layout(location = 0) out vec4 c;`, or the only
+    // output, vec4 and without a location (`out vec4 FragColor;`, which GL
+    // puts at location 0).
+    std::string output;
+    std::smatch m;
+    if (std::regex_search(source, m, std::regex(R"(layout\s*\(\s*location\s*=\s*0\s*\)\s*out\s+vec4\s+([A-Za-z_][A-Za-z0-9_]*)\s*;)"))) {
+        output = m[1];
+    } else {
+        const std::regex any_output(R"((^|\n)[ \t]*(layout\s*\([^)]*\)\s*)?((highp|mediump|lowp)\s+)?out\s+(\w+)\s+(\w+)\s*;)");
+        std::vector<std::smatch> outs;
+        for (auto it = std::sregex_iterator(source.begin(), source.end(), any_output); it != std::sregex_iterator(); ++it)
+            outs.push_back(*it);
+        if (outs.size() == 1 && outs[0][5] == "vec4" && !outs[0][2].matched) output = outs[0][6];
+    }
+    if (output.empty())
+        throw std::runtime_error("probe: the fragment program has no vec4 colour output (layout(location = 0) out vec4, "
+                                 "or its one output) to write a probe to");
     const auto version_end = source.find('\n', source.find("#version"));
     if (source.find("#version") == std::string::npos || version_end == std::string::npos)
         throw std::runtime_error("probe: the fragment program has no #version line");
@@ -67,7 +80,7 @@ std::string probe_source(const std::string& source, const std::vector<std::strin
     // The prelude's lines do not count: the shader's keep their numbers.
     const std::string body = source.substr(version_end + 1);
     return source.substr(0, version_end + 1) + prelude + "#line 2\n" + body +
-           "\n#undef main\nvoid main() {\n    st_probe_main();\n    " + std::string(output[1]) +
+           "\n#undef main\nvoid main() {\n    st_probe_main();\n    " + output +
            " = st_probe_value;\n}\n";
 }
 

@@ -36,7 +36,13 @@ TEST(Probe, SourceWritesOnlyTheChosenProbe) {
     EXPECT_NE(s.find("#define st_probe_a(v)\n"), std::string::npos);
     EXPECT_NE(s.find("#define main st_probe_main\n#line 2\n"), std::string::npos);
     EXPECT_NE(s.find("colour = st_probe_value;"), std::string::npos);
-    EXPECT_THROW(probe_source("#version 450\nout vec4 c;\nvoid main() {}\n", {"a"}, "a"), std::runtime_error);
+    // The only output, without a location, is location 0 (as public shaders write FragColor).
+    EXPECT_NE(probe_source("#version 330 core\nout vec4 FragColor;\nvoid main() {}\n", {"a"}, "a").find("FragColor = st_probe_value;"),
+              std::string::npos);
+    // No vec4 colour to write to: two outputs without locations, a vec3, none.
+    EXPECT_THROW(probe_source("#version 450\nout vec4 c;\nout vec4 d;\nvoid main() {}\n", {"a"}, "a"), std::runtime_error);
+    EXPECT_THROW(probe_source("#version 450\nout vec3 c;\nvoid main() {}\n", {"a"}, "a"), std::runtime_error);
+    EXPECT_THROW(probe_source("#version 450\nlayout(location = 1) out vec4 c;\nvoid main() {}\n", {"a"}, "a"), std::runtime_error);
 }
 
 }  // namespace st
