@@ -89,6 +89,27 @@ void read_blend(JsonReader& r, DrawState& state) {
 }
 
 // The fields every pass has, the scene's own (final) pass included.
+// `cells`: columns x rows cells over the viewport in clip space, two
+// triangles each; every corner of cell c (row-major from the bottom left)
+// has uv (c, 0, 0, 0) and white, so a vertex program's result for the cell
+// reaches each of its pixels unchanged (a plane through three equal values
+// is that value).
+void add_cells(int columns, int rows, DrawCall& draw) {
+    const auto at = [](int k, int n) { return float(-1.0 + 2.0 * double(k) / double(n)); };
+    for (int j = 0; j < rows; ++j)
+        for (int i = 0; i < columns; ++i) {
+            const glm::vec4 uv(float(j * columns + i), 0.0f, 0.0f, 0.0f);
+            const float x0 = at(i, columns), x1 = at(i + 1, columns), y0 = at(j, rows), y1 = at(j + 1, rows);
+            for (const glm::vec2 corner : {glm::vec2(x0, y0), glm::vec2(x1, y0), glm::vec2(x1, y1), glm::vec2(x0, y0),
+                                           glm::vec2(x1, y1), glm::vec2(x0, y1)}) {
+                draw.indices.push_back(uint32_t(draw.vertices.vertex_count()));
+                draw.vertices.data.push_back(glm::vec4(corner, 0.0f, 1.0f));
+                draw.vertices.data.push_back(glm::vec4(1.0f));
+                draw.vertices.data.push_back(uv);
+            }
+        }
+}
+
 Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSize image, TexelBudget& budget) {
     Pass pass;
     SceneSize size = image;
@@ -118,7 +139,7 @@ Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSiz
     const auto c = r.numbers("clear_colour");
     pass.clear_colour = glm::vec4(float(c[0]), float(c[1]), float(c[2]), float(c[3]));
     DrawCall draw;
-    draw.vertex = "textured";
+    draw.vertex = r.text("vertex");
     draw.fragment = r.text("fragment");
     if (r.has("uniforms"))
         for (JsonReader& u : declared_objects(r, "uniforms")) draw.uniforms.push_back(read_uniform(u));
@@ -136,7 +157,16 @@ Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSiz
     const Viewport viewport{float(pass.viewport_x), float(pass.viewport_y),
                             float(pass.viewport_width ? pass.viewport_width : pass.width),
                             float(pass.viewport_height ? pass.viewport_height : pass.height), 0, 1};
-    read_triangle_list(r, size, viewport, TriangleListFormat{true, true, true}, draw);
+    if (r.has("cells") == r.has("triangles"))
+        throw InputError("field '" + r.field("triangles") + "': give `triangles` or `cells`, not " +
+                         (r.has("cells") ? "both" : "neither"));
+    if (r.has("cells")) {
+        JsonReader c = r.object("cells");
+        add_cells(c.integer("columns"), c.integer("rows"), draw);
+        c.finish();
+    } else {
+        read_triangle_list(r, size, viewport, TriangleListFormat{true, true, true}, draw);
+    }
     pass.draws.push_back(std::move(draw));
     return pass;
 }

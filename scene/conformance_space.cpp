@@ -25,6 +25,16 @@ ParamSpace pass_fields() {
               "the colour the target is cleared to")
         .draws(0, 1).edge({0, 1});
     s.text("fragment", "required", "the program: glsl/conformance/<fragment>.frag");
+    s.text("vertex", "textured",
+           "the vertex program: `textured` (glsl/triangles/textured.vert: position, colour and uv passed on) or one "
+           "of glsl/conformance/ with the same inputs and outputs");
+    s.object("cells", false,
+             "instead of `triangles`: a grid of cells over the target (viewport), two triangles each, whose three "
+             "corners carry the cell's index (row-major from the bottom left) in uv.x and white, so that what a vertex "
+             "program makes of its cell is the same at all three")
+        .only_if_present();  // instead of triangles: the explorer keeps the form given
+    s.integer("cells.columns", 1, 256, "required", "cells across").explore_at_most(64).edge({1, 64});
+    s.integer("cells.rows", 1, 256, "required", "cells up").explore_at_most(64).edge({1, 64});
     s.object("uniforms", false, "the program's uniforms; each has a name and exactly one value", 0, 64);
     s.text("uniforms[].name", "required",
            "the GLSL uniform's name; a name beginning `twin_` is a switch only the twin reads (to break it on "
@@ -53,7 +63,7 @@ ParamSpace pass_fields() {
               "one_minus_dst_colour", "dst_alpha", "one_minus_dst_alpha"},
              nullptr, "glBlendFuncSeparate(src_rgb, dst_rgb[, src_alpha, dst_alpha]), GL_FUNC_ADD: 2 or 4 factors")
         .listed(2, 4);
-    s.include(triangle_list_fields(true, true, true, kMaxAttribute));
+    s.include(triangle_list_fields(true, true, true, kMaxAttribute, false));
     return s;
 }
 

@@ -104,7 +104,41 @@ nlohmann::json ParamSampler::value_or_default(const nlohmann::json& doc, const s
     return nullptr;
 }
 
-bool ParamSampler::applies(const FieldSpec& f, const nlohmann::json& doc) const {
+namespace {
+
+// The concrete paths of a declared path in `doc`: itself outside arrays,
+// else one per entry of each array on the way ("textures[].width" ->
+// "textures.0.width", "textures.1.width"), none where an array is absent.
+std::vector<std::string> entries_of(const std::string& declared, const nlohmann::json& doc) {
+    const size_t hole = declared.find("[]");
+    if (hole == std::string::npos) return {declared};
+    const std::string array = declared.substr(0, hole);
+    const nlohmann::json* a = json_at(doc, array);
+    std::vector<std::string> out;
+    if (!a || !a->is_array()) return out;
+    for (size_t i = 0; i < a->size(); ++i) {
+        const std::string entry = array + "." + std::to_string(i);
+        for (std::string& p : entries_of(entry + declared.substr(hole + 2), doc)) out.push_back(std::move(p));
+    }
+    return out;
+}
+
+}  // namespace
+
+bool ParamSampler::applies(const FieldSpec& f, const nlohmann::json& doc, const std::string& at) const {
+    // A condition inside an array entry ("textures[].pattern") is read in the
+    // entry `at` names: its indices take the places of the "[]" in order.
+    std::vector<std::string> indices;
+    for (const std::string& seg : split(at))
+        if (is_index(seg)) indices.push_back(seg);
+    const auto in_entry = [&](std::string path) {
+        for (const std::string& i : indices) {
+            const size_t hole = path.find("[]");
+            if (hole == std::string::npos) break;
+            path.replace(hole, 2, "." + i);
+        }
+        return path;
+    };
     // The field's own condition and each enclosing object's.
     std::string prefix;
     for (const std::string& seg : split(f.path)) {
@@ -115,7 +149,7 @@ bool ParamSampler::applies(const FieldSpec& f, const nlohmann::json& doc) const 
         if (!g) continue;
         if (g->opaque && g != &f) return false;
         if (!g->when_field.empty()) {
-            const std::string v = text_of(value_or_default(doc, g->when_field));
+            const std::string v = text_of(value_or_default(doc, in_entry(g->when_field)));
             if (std::find(g->when_values.begin(), g->when_values.end(), v) == g->when_values.end()) return false;
         }
     }
@@ -232,9 +266,8 @@ std::vector<Assignment> ParamSampler::draw(const nlohmann::json& base, SampleRng
     const int k = 1 + int(rng.below(uint64_t(std::max(1, max_fields))));
     for (int tries = 0; int(out.size()) < k && tries < 50; ++tries) {
         const FieldSpec& f = *candidates[rng.below(candidates.size())];
-        if (!applies(f, doc)) continue;
         const std::string path = concrete(f.path, doc, &rng);
-        if (path.empty() || !present_enough(path, doc)) continue;
+        if (path.empty() || !applies(f, doc, path) || !present_enough(path, doc)) continue;
         if (std::any_of(out.begin(), out.end(), [&](const Assignment& a) { return a.path == path; })) continue;
         nlohmann::json value = draw_value(f, path, doc, rng, rng.chance(edge_share));
         json_set(doc, path, value);
@@ -258,7 +291,7 @@ nlohmann::json ParamSampler::apply(const nlohmann::json& base, const std::vector
         for (auto it = node.begin(); it != node.end();) {
             const std::string p = path.empty() ? it.key() : path + "." + it.key();
             const FieldSpec* f = space_.find(ParamSpace::normalise(p));
-            if (f && !applies(*f, doc)) {
+            if (f && !applies(*f, doc, p)) {
                 it = node.erase(it);
                 continue;
             }
@@ -269,19 +302,22 @@ nlohmann::json ParamSampler::apply(const nlohmann::json& base, const std::vector
     prune(prune, doc, "");
 
     // Add what became required (its object first: declaration order), and
-    // meet bounds that are other fields' values.
-    for (const FieldSpec& f : space_.fields()) {
-        if (f.path.find("[]") != std::string::npos || !applies(f, doc)) continue;
-        const size_t dot = f.path.rfind('.');
-        const bool parent_present = dot == std::string::npos || json_at(doc, f.path.substr(0, dot));
-        const nlohmann::json* v = json_at(doc, f.path);
+    // meet bounds that are other fields' values; a field in array entries
+    // in each entry there is (a texture whose pattern became a generated
+    // one needs its width).
+    for (const FieldSpec& f : space_.fields())
+      for (const std::string& path : entries_of(f.path, doc)) {
+        if (!applies(f, doc, path)) continue;
+        const size_t dot = path.rfind('.');
+        const bool parent_present = dot == std::string::npos || json_at(doc, path.substr(0, dot));
+        const nlohmann::json* v = json_at(doc, path);
         // A field the explorer may only change where it is (one of several
         // forms: a slab's optics beside a stack) is never added either.
         if (f.required && !v && parent_present && !f.if_present) {
             if (f.type == FieldType::Object)
-                json_set(doc, f.path, nlohmann::json::object());
+                json_set(doc, path, nlohmann::json::object());
             else if (f.type != FieldType::Text)
-                json_set(doc, f.path, draw_value(f, f.path, doc, rng, false));
+                json_set(doc, path, draw_value(f, path, doc, rng, false));
             continue;
         }
         // The value or, absent, its default: either may be outside a bound
@@ -294,7 +330,7 @@ nlohmann::json ParamSampler::apply(const nlohmann::json& base, const std::vector
             if (!f.lo_field.empty() && lo.is_number()) x = std::max(x, lo.get<double>());
             if (!f.hi_field.empty() && hi.is_number()) x = std::min(x, hi.get<double>());
             if (x != current.get<double>())
-                json_set(doc, f.path, f.type == FieldType::Integer ? nlohmann::json((long long)std::floor(x)) : nlohmann::json(x));
+                json_set(doc, path, f.type == FieldType::Integer ? nlohmann::json((long long)std::floor(x)) : nlohmann::json(x));
         }
     }
     return doc;

@@ -56,8 +56,10 @@ public:
                          SampleRng& rng) const;
 
     // Whether the field applies in `doc` (its `when` and every enclosing
-    // object's hold, the enclosing array exists).
-    bool applies(const FieldSpec& f, const nlohmann::json& doc) const;
+    // object's hold, the enclosing array exists); `at` is its concrete path,
+    // whose indices say which array entry a condition is read in (empty:
+    // outside arrays).
+    bool applies(const FieldSpec& f, const nlohmann::json& doc, const std::string& at = "") const;
     // One value of the field, its dependent bounds read from `doc` at `path`.
     nlohmann::json draw_value(const FieldSpec& f, const std::string& path, const nlohmann::json& doc,
                               SampleRng& rng, bool edge) const;

@@ -79,6 +79,29 @@ TEST(ParamSampler, NeverDrawsATwinOnlySwitch) {
     EXPECT_FALSE(is_twin_switch(&other));
 }
 
+// A condition inside an array entry is read in that entry: a file texture's
+// colour_space (only with pattern "file") is drawn, and a texture whose
+// pattern becomes a generated one loses its file and gains the width and
+// height it then needs (explore --seed 5 refused such cases before).
+TEST(ParamSampler, ConditionsInArrayEntriesAreReadInTheEntry) {
+    const ParamSampler sampler(*kind_space("conformance"));
+    const nlohmann::json base = read_sampler_base(SceneSources().find("conformance-file-png-srgb-rgba8")->path);
+    const FieldSpec& colour_space = *kind_space("conformance")->find("textures[].colour_space");
+    EXPECT_TRUE(sampler.applies(colour_space, base, "textures.0.colour_space"));
+    bool drawn = false;
+    for (uint64_t seed = 0; seed < 3000 && !drawn; ++seed) {
+        SampleRng rng(seed);
+        for (const Assignment& a : sampler.draw(base, rng, 3)) drawn |= a.path == "textures.0.colour_space";
+    }
+    EXPECT_TRUE(drawn);
+    SampleRng rng(3);
+    const nlohmann::json noise = sampler.apply(base, {{"textures.0.pattern", "noise"}}, rng);
+    EXPECT_FALSE(noise["textures"][0].contains("file"));
+    EXPECT_TRUE(noise["textures"][0].contains("width"));
+    EXPECT_TRUE(noise["textures"][0].contains("height"));
+    EXPECT_NO_THROW(load_scene_document("t", noise, ""));
+}
+
 TEST(ParamSampler, ApplyKeepsTheDocumentConsistentWithTheSpace) {
     const ParamSampler sampler(*kind_space("relief"));
     const nlohmann::json base = read_sampler_base(SceneSources().find("relief-two-layer")->path);

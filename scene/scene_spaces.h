@@ -23,6 +23,7 @@ ParamSpace pattern_texture_fields(bool render_targets);
 // The list of triangles (scene/triangle_list.h), under "triangles": positions
 // in pixels only (else clip space too), white when no colour is given, uvs
 // always (else only with a texture), uvs within +-max_uv.
-ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs_always, double max_uv);
+ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs_always, double max_uv,
+                                bool required = true);
 
 }  // namespace st

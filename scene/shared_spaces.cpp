@@ -70,9 +70,14 @@ ParamSpace pattern_texture_fields(bool render_targets) {
     return s;
 }
 
-ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs_always, double max_uv) {
+ParamSpace triangle_list_fields(bool pixels_only, bool colour_optional, bool uvs_always, double max_uv,
+                                bool required) {
     ParamSpace s("triangles");
-    s.object("triangles", true, "the triangles, in draw order", 1, 1 << 20).explore_at_most(10000);
+    FieldSpec& triangles = s.object("triangles", required,
+                                    required ? "the triangles, in draw order" : "the triangles, in draw order (or `cells`)",
+                                    1, 1 << 20);
+    triangles.explore_at_most(10000);
+    if (!required) triangles.only_if_present();  // one of two forms: the explorer keeps the one given
     const std::string clip = "clip space: [x, y], [x, y, z] or [x, y, z, w] (z defaults to 0, w to 1, w must not be "
                              "0 as a float)";
     const std::string pixels = "window pixels (y up, origin bottom-left): [x, y] or [x, y, depth], depth in [0, 1] "

@@ -83,7 +83,8 @@ void read_texture_files(JsonReader& r, Texture& t, TexelBudget& budget) {
     const std::string colour_space = r.choice("colour_space");
     // A cube's faces run top row first in GL's convention (its t axis
     // points down each face), so they are uploaded as stored.
-    const bool flip = !t.cube && r.choice("orientation") == "upright";
+    const bool upright = r.choice("orientation") == "upright";
+    const bool flip = !t.cube && upright;
     for (size_t face = 0; face < paths.size(); ++face) {
         const std::string where = "field '" + field + (t.cube ? "." + std::to_string(face) : "") + "' (" + paths[face] + ")";
         Image image;

@@ -27,6 +27,8 @@
 //  17: 1.0 / inversesqrt(q)              runs as sqrt(q)
 //  18: exp(log(q)), exp2(log2(q))        run as q
 //  19: 1.0 / (1.0 / q)                   runs as q
+//  20: refract(i, n, 0.66)               runs with k = 1 - (0.66 * 0.66) (1 - d d),
+//                                        the constants' product folded
 // Operands are finite values of many magnitudes from the pixel's index;
 // nothing is a constant but what the expression writes, so nothing else is
 // folded. The twin writes what llvmpipe runs; its uniform `twin_naive` (twin
@@ -92,6 +94,8 @@ void main() {
         frag_colour = vec4(exp(log(abs(a))), exp2(log2(abs(b))), 0.0, 0.0);
     else if (group == 19)
         frag_colour = vec4(1.0 / (1.0 / a), 0.0, 0.0, 0.0);
+    else if (group == 20)
+        frag_colour = vec4(refract(normalize(colour), normalize(diff), 0.66), 0.0);
     else {
         float s = 0.0;
         for (int i = 0; i < 8; ++i)

@@ -86,6 +86,10 @@ Vec4 CompilerRewritesFragment::main(const Fragment& frag) const {
         return Vec4(abs(a), abs(b), zero, zero);
     case 19:  // GLSL IR do_algebraic: rcp(rcp(q)) -> q
         return Vec4(naive_ ? 1.0f / (1.0f / a) : a, zero, zero, zero);
+    case 20: {  // nir_opt_algebraic: #a * (b * #c) -> (#a * #c) * b, the constants folded
+        const Vec3 i = normalize(colour), n = normalize(diff);
+        return Vec4(naive_ ? refract(i, n, Float(0.66f)) : refract_constant_eta(i, n, Float(0.66f)), zero);
+    }
     default: {  // 16 and any other group, as the GLSL's last else: the loop unrolled (NIR), then
                 //  each sin and the sums folded
         float s = 0.0f;

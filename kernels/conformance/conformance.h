@@ -68,6 +68,24 @@ private:
     float zero_ = 0.0f;
 };
 
+// builtins_vertex.vert: the built-ins in the vertex stage, per cell.
+class BuiltinsVertex final : public VertexTwin {  // builtins_vertex.vert
+public:
+    int varying_count() const override { return 2; }
+    void bind(const Bindings& b) override { group_ = b.get_int("group"); }
+    void run(const glm::vec4* attributes, VertexOut& out) const override;
+
+private:
+    static float value(int index, int k);
+    int group_ = 0;
+};
+
+class VertexResultFragment final : public FragmentProgram<VertexResultFragment> {  // vertex_result.frag
+public:
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+};
+
 // A built-in family's program: the uniform `group` picks which functions
 // it writes (one scene each), and its inputs come from the pixel alone.
 template <class Derived> class BuiltinsFragment : public FragmentProgram<Derived> {

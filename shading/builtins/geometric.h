@@ -100,9 +100,10 @@ ST_INLINE V reflect(const V& i, const V& n) {
 // k < 0 (total internal reflection; a NaN k takes the other side), else
 // eta * I - (eta * dot(N, I) + sqrt(k)) * N.
 template <class V, class S>
-ST_INLINE V refract_of(const V& i, const V& n, S eta) {
+ST_INLINE V refract_of(const V& i, const V& n, S eta, bool constant_eta = false) {
     const S n_dot_i = glsl::dot(n, i);
-    const S k = S(1.0f) - eta * (eta * (S(1.0f) - n_dot_i * n_dot_i));
+    const S k = constant_eta ? S(1.0f) - (eta * eta) * (S(1.0f) - n_dot_i * n_dot_i)
+                             : S(1.0f) - eta * (eta * (S(1.0f) - n_dot_i * n_dot_i));
     const S f = eta * n_dot_i + glsl::sqrt(k);
     const auto total = k < S(0.0f);
     if constexpr (componentwise::is_vector<V>)
@@ -117,6 +118,18 @@ template <class V>
     requires componentwise::is_vector<V>
 ST_INLINE V refract(const V& i, const V& n, const componentwise::ScalarOf<V>& eta) {
     return refract_of(i, n, eta);
+}
+// refract() with eta a constant (a literal, or a const the compiler
+// propagates): NIR folds eta * (eta * x) to (eta * eta) * x, the product of
+// the two constants rounded once (nir_opt_algebraic's #a * (b * #c) rule,
+// constant folding in float), which differs from refract() in the last bit
+// (compiler-rewrites.md, entry 20; conformance-builtins-vertex-geometric).
+ST_INLINE float refract_constant_eta(float i, float n, float eta) { return refract_of(i, n, eta, true); }
+ST_INLINE Float refract_constant_eta(Float i, Float n, Float eta) { return refract_of(i, n, eta, true); }
+template <class V>
+    requires componentwise::is_vector<V>
+ST_INLINE V refract_constant_eta(const V& i, const V& n, const componentwise::ScalarOf<V>& eta) {
+    return refract_of(i, n, eta, true);
 }
 
 }  // namespace st::glsl

@@ -1,0 +1,61 @@
+// builtins_vertex_vert.cpp: twin of glsl/conformance/builtins_vertex.vert,
+// line for line, one vertex at a time: the scalar forms of the built-ins
+// (float and glm), as a user's vertex twin calls them.
+#include "kernels/conformance/conformance.h"
+
+#include <bit>
+
+#include "kernels/conformance/builtin_inputs.h"
+
+namespace st {
+
+namespace {
+constexpr int position = 0, uv = 2;    // inputs
+constexpr int v_colour = 0, v_uv = 1;  // outputs
+}  // namespace
+
+float BuiltinsVertex::value(int index, int k) {
+    const int h = (index * (2 * k + 37) + k * 101) & 1023;
+    const int e = ((index >> (k & 7)) + k) & 15;
+    return float(h - 512) * 0.0137f * glsl::intBitsToFloat((e + 121) << 23);
+}
+
+void BuiltinsVertex::run(const glm::vec4* attributes, VertexOut& out) const {
+    namespace in = builtin_inputs;
+    out.position = attributes[position];
+    const int index = int(attributes[uv].x);
+    const uint32_t sign_bit = uint32_t(index & 1);
+    const uint32_t exponent = uint32_t((index >> 1) & 255);
+    const uint32_t mantissa = uint32_t(in::kMantissas[(index >> 9) & 7]);
+    const float x = std::bit_cast<float>((sign_bit << 31) | (exponent << 23) | mantissa);
+    const float y = std::bit_cast<float>(in::kEdges[(index ^ (index >> 4) ^ (index >> 8)) & 15]);
+    const glm::vec3 a(value(index, 0), value(index, 1), value(index, 2));
+    const glm::vec3 b(value(index, 3), value(index, 4), value(index, 5));
+    glm::vec4 r;
+    if (group_ == 0) {
+        r = glm::vec4(glsl::log2(x), glsl::log(x), glsl::pow(x, y), glsl::pow(glsl::abs(x), y));
+    } else if (group_ == 1) {
+        r = glm::vec4(glsl::exp2(x), glsl::exp(x), glsl::sqrt(x), glsl::inversesqrt(x));
+    } else if (group_ == 2) {
+        r = glm::vec4(glsl::sin(x), glsl::cos(x), glsl::tan(x), glsl::atan(x, y));
+    } else if (group_ == 3) {
+        r = glm::vec4(glsl::asin(x), glsl::acos(x), glsl::atan(x), glsl::tanh(x));
+    } else if (group_ == 4) {
+        r = glm::vec4(glsl::floor(x), glsl::fract(x), glsl::mod(x, y), glsl::max(x, y));
+    } else if (group_ == 5) {
+        const glm::vec3 n = glsl::normalize(b);
+        r = glm::vec4(glsl::length(a), glsl::dot(a, b), glsl::reflect(a, n).x,
+                      glsl::refract_constant_eta(glsl::normalize(a), n, 0.66f).y);
+    } else {
+        const glm::mat3 m(a, b, glm::vec3(value(index, 6), value(index, 7), value(index, 8)));
+        const glm::mat3 inv = glsl::inverse(m);
+        r = glm::vec4(glsl::determinant(m), inv[0].x, inv[1].y, inv[2].z);
+    }
+    for (int c = 0; c < 4; ++c) {
+        const uint32_t bits = std::bit_cast<uint32_t>(r[c]);
+        out.varyings[v_colour][c] = float(bits >> 16u);
+        out.varyings[v_uv][c] = float(bits & 0xFFFFu);
+    }
+}
+
+}  // namespace st
