@@ -6,8 +6,9 @@
 # cli.compare_builtin and cli.golden check in one process each, and would
 # add minutes here; cli.ctest_labels runs one technique's of them. Label
 # `long` (cli.lane_widths: two more builds, four minutes; sdk.lto: a user's
-# tool linked with LTO; cli.threads: every golden hash at 1, 3 and 8
-# threads) runs in CI right after this script (.ci/run);
+# tool linked with LTO; sdk.tutorial_part2 and sdk.skeleton: new-technique's
+# projects built against the install; cli.threads: every golden hash at 1, 3
+# and 8 threads) runs in CI right after this script (.ci/run);
 # `ctest --test-dir build -L long` runs it here.
 set -euo pipefail
 cd "$(dirname "$0")"

@@ -4,21 +4,33 @@
 # of the page in order from an empty folder: a ```LANG file=PATH block is
 # written to PATH, a ```sh block is run, and a ```text output block must
 # appear in what the sh block before it printed.
-# Usage: tutorial_test.sh SOURCE_DIR BUILD_DIR CXX_COMPILER
+# PART 1 (sdk.tutorial, in ./test.sh) runs the page up to its part 2;
+# PART 2 (sdk.tutorial_part2, label long: four more builds of a user's
+# project) runs part 2 from where part 1 leaves the reader, beside a `sheet`
+# folder.
+# Usage: tutorial_test.sh SOURCE_DIR BUILD_DIR CXX_COMPILER PART
 set -euo pipefail
 source "$(dirname "$0")/lib.sh"
+part="${4:?PART (1 or 2)}"
 sdk_setup "$@"
 
 export SHADERTWIN_PREFIX="$work/prefix"
 # The page's cmake commands take the compiler the libraries were built with.
 export CXX="$cxx"
 mkdir "$work/home"
-python3 - "$src/docs/adding-a-technique.md" "$work/home" <<'PY'
+python3 - "$src/docs/adding-a-technique.md" "$work/home" "$part" <<'PY'
 import os, re, subprocess, sys
 
-page, home = sys.argv[1], sys.argv[2]
-blocks = re.findall(r"^```([^\n]*)\n(.*?)^```$", open(page).read(), re.S | re.M)
-cwd = home
+page, home, part = sys.argv[1], sys.argv[2], sys.argv[3]
+text = open(page).read()
+part2 = text.index("\n## Tutorial, part 2")
+if part == "1":
+    text = text[:part2]
+else:
+    text = text[part2:text.index("\n## Reference")]
+    os.makedirs(os.path.join(home, "sheet"))  # where part 1 leaves the reader
+blocks = re.findall(r"^```([^\n]*)\n(.*?)^```$", text, re.S | re.M)
+cwd = home if part == "1" else os.path.join(home, "sheet")
 last_output = None
 ran = files = checked = 0
 for info, body in blocks:
@@ -54,5 +66,5 @@ for info, body in blocks:
         checked += 1
 if ran < 4 or files < 6 or checked < 1:
     sys.exit(f"FAIL: the page has {ran} commands, {files} files, {checked} outputs: fewer than the tutorial needs")
-print(f"ok   docs/adding-a-technique.md: {files} files written, {ran} command blocks run, {checked} outputs as shown")
+print(f"ok   docs/adding-a-technique.md, part {part}: {files} files written, {ran} command blocks run, {checked} outputs as shown")
 PY

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# shadertwin new-technique as a user meets it (issue 27): this build
+# installed into a fresh prefix, the example's shaders
+# (examples/wrap_lighting/glsl) made into a project by the installed tool,
+# built against the install, and its compare run: it must exit 1 naming both
+# twins still to write. (The tutorial's part 2, sdk.tutorial_part2, does the
+# same for its shaders and then writes the twins.)
+# Usage: sdk_skeleton_test.sh SOURCE_DIR BUILD_DIR CXX_COMPILER
+set -euo pipefail
+source "$(dirname "$0")/lib.sh"
+sdk_setup "$@"
+"$prefix/bin/shadertwin" new-technique wrapsk "$src/examples/wrap_lighting/glsl/wrap.vert" \
+  "$src/examples/wrap_lighting/glsl/wrap.frag" --out "$work/skeleton" >"$work/skeleton.txt" ||
+  { cat "$work/skeleton.txt"; fail "new-technique"; }
+configure() { cmake -S "$1" -B "$2" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${@:3}"; }
+start=$(date +%s)
+configure "$work/skeleton" "$work/skeleton/build" >"$work/configure.log" 2>&1 || { cat "$work/configure.log"; fail "configure the skeleton"; }
+cmake --build "$work/skeleton/build" -j 2 >"$work/build.log" 2>&1 || { tail -40 "$work/build.log"; fail "build the skeleton"; }
+set +e; "$work/skeleton/build/wrapsktwin" compare wrapsk-first --out "$work/skeleton/out" >"$work/compare.txt" 2>&1; rc=$?; set -e
+[ "$rc" -eq 1 ] || { cat "$work/compare.txt"; fail "the skeleton's compare: exit $rc, expected 1"; }
+grep -q "twin of wrapsk.vert not written yet: write run() in kernels/wrapsk_vert.cpp" "$work/compare.txt" &&
+  grep -q "twin of wrapsk.frag not written yet: write main() in kernels/wrapsk_frag.cpp" "$work/compare.txt" ||
+  { cat "$work/compare.txt"; fail "the skeleton's compare does not say what is left to write"; }
+[ -s "$work/skeleton/out/wrapsk-first.gl.png" ] || fail "the skeleton's scene was not drawn"
+echo "ok   new-technique: the example's shaders as a project built in $(( $(date +%s) - start )) s; compare exits 1: $(grep -c 'not written yet' "$work/compare.txt") twins to write"
