@@ -31,7 +31,10 @@ struct VertexArray {
 // A GLSL uniform's type as glUniform* sets it. bool and bvecN are set as
 // Int and IVecN (glUniform*i); an element of an array or a member of a
 // struct is its own Uniform, named as GL names it ("lights[2]", "mat.albedo").
-enum class UniformType { Float, Vec2, Vec3, Vec4, Int, Mat4, IVec2, IVec3, IVec4, UInt, UVec2, UVec3, UVec4, Mat2, Mat3 };
+enum class UniformType {
+    Float, Vec2, Vec3, Vec4, Int, Mat4, IVec2, IVec3, IVec4, UInt, UVec2, UVec3, UVec4, Mat2, Mat3,
+    Mat2x3, Mat2x4, Mat3x2, Mat3x4, Mat4x2, Mat4x3  // matCxR: C columns of R rows
+};
 
 struct Uniform {
     std::string name;

@@ -35,7 +35,10 @@ namespace st {
     X(ShaderSource) X(TexParameterf) X(TexParameteri) X(TexStorage2D) X(TexSubImage2D) X(Uniform1f)         \
     X(Uniform1i) X(Uniform2f) X(Uniform3f) X(Uniform4f) X(UniformMatrix4fv) X(UseProgram)                   \
     X(Uniform2i) X(Uniform3i) X(Uniform4i) X(Uniform1ui) X(Uniform2ui) X(Uniform3ui) X(Uniform4ui)          \
-    X(UniformMatrix2fv) X(UniformMatrix3fv)                                                                 \
+    X(UniformMatrix2fv) X(UniformMatrix3fv) X(UniformMatrix2x3fv) X(UniformMatrix2x4fv) X(UniformMatrix3x2fv)  \
+    X(UniformMatrix3x4fv) X(UniformMatrix4x2fv) X(UniformMatrix4x3fv)                                        \
+    X(GetActiveUniformBlockiv) X(GetActiveUniformsiv) X(GetActiveUniformName) X(UniformBlockBinding)         \
+    X(BindBufferBase)                                                                                       \
     X(VertexAttribPointer) X(Viewport)
 
 // The prototypes above are only read for their types (decltype); nothing

@@ -4,8 +4,10 @@
 // 32-bit float depth), same clear, same draw order, same blend and depth
 // state. Anything set here that changes pixels must be set there too.
 #include "gl/gl_renderer.h"
+
 #include "gl/gl_context.h"
 #include "gl/shader_files.h"
+#include "gl/uniform_blocks.h"
 
 #include <algorithm>
 #include <fstream>
@@ -209,6 +211,12 @@ void set_uniform(const GlApi& gl, GLuint program, const Uniform& u) {
         case UniformType::UVec4: gl.Uniform4ui(loc, GLuint(v[0]), GLuint(v[1]), GLuint(v[2]), GLuint(v[3])); break;
         case UniformType::Mat2: gl.UniformMatrix2fv(loc, 1, GL_FALSE, v); break;
         case UniformType::Mat3: gl.UniformMatrix3fv(loc, 1, GL_FALSE, v); break;
+        case UniformType::Mat2x3: gl.UniformMatrix2x3fv(loc, 1, GL_FALSE, v); break;
+        case UniformType::Mat2x4: gl.UniformMatrix2x4fv(loc, 1, GL_FALSE, v); break;
+        case UniformType::Mat3x2: gl.UniformMatrix3x2fv(loc, 1, GL_FALSE, v); break;
+        case UniformType::Mat3x4: gl.UniformMatrix3x4fv(loc, 1, GL_FALSE, v); break;
+        case UniformType::Mat4x2: gl.UniformMatrix4x2fv(loc, 1, GL_FALSE, v); break;
+        case UniformType::Mat4x3: gl.UniformMatrix4x3fv(loc, 1, GL_FALSE, v); break;
     }
 }
 
@@ -232,6 +240,10 @@ struct GlRenderer::State {
         // so values set once at prepare would be the last draw's for all.
         std::vector<Uniform> uniforms;
         std::vector<std::string> sampler_names;  // per unit
+        // Per active uniform block: its buffer, bound to binding point =
+        // the block's index at each execute (gl/uniform_blocks.h).
+        std::vector<GLuint> block_buffers;
+        std::vector<GLuint> block_indices;
     };
     // A pass: its own RGBA32F target (the frame's image), or a level of a
     // named target (fbo and colour then belong to `named`).
@@ -262,6 +274,7 @@ struct GlRenderer::State {
                 gl.DeleteVertexArrays(1, &d.vao);
                 gl.DeleteBuffers(1, &d.vbo);
                 gl.DeleteBuffers(1, &d.ebo);
+                if (!d.block_buffers.empty()) gl.DeleteBuffers(GLsizei(d.block_buffers.size()), d.block_buffers.data());
                 gl.DeleteTextures(GLsizei(d.owned_textures.size()), d.owned_textures.data());
                 for (GLuint sampler : d.samplers)
                     if (sampler) gl.DeleteSamplers(1, &sampler);
@@ -406,6 +419,14 @@ void GlRenderer::prepare(const Frame& frame) {
             gl.BindVertexArray(0);
 
             d.uniforms = dc.uniforms;
+            for (const UniformBlockData& block : uniform_block_data(gl, d.program, dc.uniforms)) {
+                GLuint buffer = 0;
+                gl.GenBuffers(1, &buffer);
+                gl.BindBuffer(GL_UNIFORM_BUFFER, buffer);
+                gl.BufferData(GL_UNIFORM_BUFFER, GLsizeiptr(block.bytes.size()), block.bytes.data(), GL_STATIC_DRAW);
+                d.block_buffers.push_back(buffer);
+                d.block_indices.push_back(block.index);
+            }
             for (size_t unit = 0; unit < dc.textures.size(); ++unit) {
                 const Texture& tex = dc.textures[unit];
                 GLuint name = 0, sampler = 0;
@@ -483,6 +504,10 @@ void GlRenderer::execute() {
             }
             gl.UseProgram(d.program);
             for (const Uniform& u : d.uniforms) set_uniform(gl, d.program, u);
+            for (size_t b = 0; b < d.block_buffers.size(); ++b) {
+                gl.UniformBlockBinding(d.program, d.block_indices[b], d.block_indices[b]);
+                gl.BindBufferBase(GL_UNIFORM_BUFFER, d.block_indices[b], d.block_buffers[b]);
+            }
             for (size_t unit = 0; unit < d.textures.size(); ++unit) {
                 const GLint loc = gl.GetUniformLocation(d.program, d.sampler_names[unit].c_str());
                 if (loc >= 0) gl.Uniform1i(loc, GLint(unit));

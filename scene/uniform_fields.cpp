@@ -1,6 +1,7 @@
 // uniform_fields.cpp: see uniform_fields.h.
 #include "scene/uniform_fields.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "scene/input_error.h"
@@ -16,7 +17,7 @@ struct TypeInfo {
     UniformType type;
     int count;     // values
     char element;  // 'f' float, 'i' int, 'u' uint, 'b' bool
-    int matrix;    // N of matN, else 0
+    int columns = 0, rows = 0;  // a matrix's, else 0
 };
 
 bool type_info(const std::string& t, TypeInfo& info) {
@@ -29,8 +30,12 @@ bool type_info(const std::string& t, TypeInfo& info) {
         {"uvec3", {UniformType::UVec3, 3, 'u', 0}}, {"uvec4", {UniformType::UVec4, 4, 'u', 0}},
         {"bool", {UniformType::Int, 1, 'b', 0}},    {"bvec2", {UniformType::IVec2, 2, 'b', 0}},
         {"bvec3", {UniformType::IVec3, 3, 'b', 0}}, {"bvec4", {UniformType::IVec4, 4, 'b', 0}},
-        {"mat2", {UniformType::Mat2, 4, 'f', 2}},   {"mat3", {UniformType::Mat3, 9, 'f', 3}},
-        {"mat4", {UniformType::Mat4, 16, 'f', 4}},
+        {"mat2", {UniformType::Mat2, 4, 'f', 2, 2}},     {"mat3", {UniformType::Mat3, 9, 'f', 3, 3}},
+        {"mat4", {UniformType::Mat4, 16, 'f', 4, 4}},    {"mat2x2", {UniformType::Mat2, 4, 'f', 2, 2}},
+        {"mat3x3", {UniformType::Mat3, 9, 'f', 3, 3}},   {"mat4x4", {UniformType::Mat4, 16, 'f', 4, 4}},
+        {"mat2x3", {UniformType::Mat2x3, 6, 'f', 2, 3}}, {"mat2x4", {UniformType::Mat2x4, 8, 'f', 2, 4}},
+        {"mat3x2", {UniformType::Mat3x2, 6, 'f', 3, 2}}, {"mat3x4", {UniformType::Mat3x4, 12, 'f', 3, 4}},
+        {"mat4x2", {UniformType::Mat4x2, 8, 'f', 4, 2}}, {"mat4x3", {UniformType::Mat4x3, 12, 'f', 4, 3}},
     };
     for (const auto& e : table)
         if (t == e.name) {
@@ -43,14 +48,14 @@ bool type_info(const std::string& t, TypeInfo& info) {
 // One value of the type from `v`; `field` names it in errors.
 Uniform value_of(const nlohmann::json& v, const TypeInfo& info, const std::string& name, const std::string& field) {
     Uniform u{name, info.type, {}};
-    if (info.matrix && v.is_string() && v.get<std::string>() == "identity") {
-        for (int c = 0; c < info.matrix; ++c) u.value[size_t(c * info.matrix + c)] = 1.0f;
+    if (info.columns && v.is_string() && v.get<std::string>() == "identity") {
+        for (int c = 0; c < std::min(info.columns, info.rows); ++c) u.value[size_t(c * info.rows + c)] = 1.0f;
         return u;
     }
     const bool scalar = info.count == 1;
     if (!scalar && (!v.is_array() || v.size() != size_t(info.count)))
         throw InputError("field '" + field + "' must be " + std::to_string(info.count) +
-                         (info.element == 'b' ? " booleans" : " numbers") + (info.matrix ? " (column-major) or \"identity\"" : ""));
+                         (info.element == 'b' ? " booleans" : " numbers") + (info.columns ? " (column-major) or \"identity\"" : ""));
     for (int c = 0; c < info.count; ++c) {
         const nlohmann::json& x = scalar ? v : v[size_t(c)];
         const std::string where = scalar ? field : field + "." + std::to_string(c);

@@ -5,8 +5,8 @@
 //   float, int, uint      a number (integers whole, within +-2^24, uint >= 0)
 //   bool                  true or false
 //   vecN, ivecN, uvecN    N numbers;  bvecN: N booleans
-//   matN                  N*N numbers, column-major as glUniformMatrix*fv
-//                         takes them, or "identity"
+//   matN, matCxR          N*N (C*R) numbers, column-major as
+//                         glUniformMatrix*fv takes them, or "identity"
 //   T name[K]             an array of K values of T, set as name[0] ...
 // Floats lie within +-1e6 (a radiance or a coordinate a scene needs; a
 // product of two then stays finite).

@@ -82,6 +82,20 @@ inline Uniform uniform(const std::string& name, const glm::mat3& m) {
     return u;
 }
 
+// matCxR (C != R), column-major as glUniformMatrixCxRfv takes it.
+template <int C, int R, glm::qualifier Q>
+inline Uniform uniform(const std::string& name, const glm::mat<C, R, float, Q>& m)
+    requires(C != R)
+{
+    constexpr UniformType types[3][3] = {{UniformType::Mat2, UniformType::Mat2x3, UniformType::Mat2x4},
+                                         {UniformType::Mat3x2, UniformType::Mat3, UniformType::Mat3x4},
+                                         {UniformType::Mat4x2, UniformType::Mat4x3, UniformType::Mat4}};
+    Uniform u{name, types[C - 2][R - 2], {}};
+    for (int c = 0; c < C; ++c)
+        for (int r = 0; r < R; ++r) u.value[size_t(c * R + r)] = m[c][r];
+    return u;
+}
+
 // Column-major, as glUniformMatrix4fv takes it.
 inline Uniform uniform(const std::string& name, const glm::mat4& m) {
     Uniform u{name, UniformType::Mat4, {}};

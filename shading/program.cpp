@@ -65,6 +65,25 @@ glm::mat2 Bindings::get_mat2(const std::string& name) const {
     return glm::mat2(v[0], v[1], v[2], v[3]);
 }
 
+namespace {
+
+// A matCxR uniform as glm holds it: C columns of R rows, column-major.
+template <int C, int R> glm::mat<C, R, float> matrix_of(const Uniform& u) {
+    glm::mat<C, R, float> m;
+    for (int c = 0; c < C; ++c)
+        for (int r = 0; r < R; ++r) m[c][r] = u.value[size_t(c * R + r)];
+    return m;
+}
+
+}  // namespace
+
+glm::mat2x3 Bindings::get_mat2x3(const std::string& name) const { return matrix_of<2, 3>(find(uniforms, name, UniformType::Mat2x3)); }
+glm::mat2x4 Bindings::get_mat2x4(const std::string& name) const { return matrix_of<2, 4>(find(uniforms, name, UniformType::Mat2x4)); }
+glm::mat3x2 Bindings::get_mat3x2(const std::string& name) const { return matrix_of<3, 2>(find(uniforms, name, UniformType::Mat3x2)); }
+glm::mat3x4 Bindings::get_mat3x4(const std::string& name) const { return matrix_of<3, 4>(find(uniforms, name, UniformType::Mat3x4)); }
+glm::mat4x2 Bindings::get_mat4x2(const std::string& name) const { return matrix_of<4, 2>(find(uniforms, name, UniformType::Mat4x2)); }
+glm::mat4x3 Bindings::get_mat4x3(const std::string& name) const { return matrix_of<4, 3>(find(uniforms, name, UniformType::Mat4x3)); }
+
 glm::ivec2 Bindings::get_ivec2(const std::string& name) const {
     const auto& v = find(uniforms, name, UniformType::IVec2).value;
     return glm::ivec2(int(v[0]), int(v[1]));

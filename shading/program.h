@@ -16,7 +16,13 @@
 #include <vector>
 
 #include <glm/mat2x2.hpp>
+#include <glm/mat2x3.hpp>
+#include <glm/mat2x4.hpp>
+#include <glm/mat3x2.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/mat3x4.hpp>
+#include <glm/mat4x2.hpp>
+#include <glm/mat4x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -59,6 +65,13 @@ struct Bindings {
     glm::mat4 get_mat4(const std::string& name) const;
     glm::mat3 get_mat3(const std::string& name) const;
     glm::mat2 get_mat2(const std::string& name) const;
+    // The non-square ones, glm's mat<C, R>: C columns of R rows.
+    glm::mat2x3 get_mat2x3(const std::string& name) const;
+    glm::mat2x4 get_mat2x4(const std::string& name) const;
+    glm::mat3x2 get_mat3x2(const std::string& name) const;
+    glm::mat3x4 get_mat3x4(const std::string& name) const;
+    glm::mat4x2 get_mat4x2(const std::string& name) const;
+    glm::mat4x3 get_mat4x3(const std::string& name) const;
     // bool is set as an int (glUniform1i), bvecN as ivecN.
     bool get_bool(const std::string& name) const { return get_int(name) != 0; }
     glm::ivec2 get_ivec2(const std::string& name) const;

@@ -800,10 +800,10 @@ PY
       "$bin" new-technique interp "$ex/wrap.vert" "$ex/wrap.frag"
     expect_refused "a name that is no identifier" "lower-case C identifier" \
       "$bin" new-technique Wrap-It "$ex/wrap.vert" "$ex/wrap.frag"
-    printf '#version 450\nlayout(location = 0) out vec4 c;\nlayout(std140) uniform M { vec4 tint; };\nvoid main() { c = tint; }\n' \
-      >"$work/block.frag"
-    expect_refused "a uniform block" "block.frag:3: uniform block 'M'" \
-      "$bin" new-technique blk "$ex/wrap.vert" "$work/block.frag"
+    printf '#version 450\nlayout(location = 0) out vec4 c;\nuniform sampler3D volume;\nvoid main() { c = vec4(1.0); }\n' \
+      >"$work/volume.frag"
+    expect_refused "a sampler type twins do not have" "volume.frag:3: uniform sampler3D volume" \
+      "$bin" new-technique vol "$ex/wrap.vert" "$work/volume.frag"
     expect_refused "a shader that is not there" "cannot read" "$bin" new-technique gone "$ex/wrap.vert" "$work/none.frag"
     ;;
 

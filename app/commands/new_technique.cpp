@@ -11,6 +11,7 @@
 
 #include "app/new_technique/glsl_declarations.h"
 #include "app/new_technique/skeleton_files.h"
+#include "gl/gl_renderer.h"
 #include "kernels/registry.h"
 #include "scene/input_error.h"
 #include "scene/scene_kinds.h"
@@ -21,12 +22,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string file_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError("cannot read " + path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+std::string glsl_text(const std::string& path) {
+    if (!std::ifstream(path)) throw InputError("cannot read " + path);
+    try {
+        return read_glsl_source(path);
+    } catch (const std::runtime_error& e) {
+        throw InputError(e.what());
+    }
 }
 
 void check_name(const std::string& name) {
@@ -50,7 +52,9 @@ int cmd_new_technique(const std::string& name, const std::string& vert, const st
     std::error_code ec;
     if (fs::exists(out_dir, ec) && !(fs::is_directory(out_dir, ec) && fs::is_empty(out_dir, ec)))
         throw InputError(out_dir + " exists and is not an empty folder: choose another --out");
-    const std::string vert_source = file_text(vert), frag_source = file_text(frag);
+    // With any #include "file" spliced in, as the GL side reads a shader:
+    // the project's copies are then whole.
+    const std::string vert_source = glsl_text(vert), frag_source = glsl_text(frag);
     const skeleton::GlslStage v = skeleton::parse_glsl_stage(vert_source, vert);
     const skeleton::GlslStage f = skeleton::parse_glsl_stage(frag_source, frag);
     const std::vector<skeleton::ProjectFile> files = skeleton::skeleton_files(name, v, vert_source, f, frag_source);

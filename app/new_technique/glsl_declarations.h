@@ -25,6 +25,11 @@ struct GlslVariable {
     std::vector<std::string> qualifiers;  // flat, noperspective, highp, ...
     std::string initialiser;  // a constant's, as written
     int line = 0;
+    // The name GL gives it where that is not `name`: a uniform block with an
+    // instance name is the variable `instance` of the block's type, whose
+    // members GL names "Block.member" (skeleton_files.cpp).
+    std::string gl_name;
+    const std::string& gl() const { return gl_name.empty() ? name : gl_name; }
 };
 
 struct GlslStruct {

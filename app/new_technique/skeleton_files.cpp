@@ -116,11 +116,27 @@ void check_uniform_type(const GlslStage& s, const GlslVariable& u, std::set<std:
 
 Interface interface_of(const GlslStage& vert, const GlslStage& frag) {
     Interface in;
-    for (const GlslStage* s : {&vert, &frag})
-        for (const GlslBlock& b : s->blocks)
-            if (b.storage == "uniform")
-                refuse(*s, b.line, "uniform block '" + b.name + "': shadertwin sets plain uniforms; declare its members "
-                                   "as uniforms of their own");
+    // Uniform blocks: GL names a member "Block.member" when the block has
+    // an instance name (the twin holds the instance as a struct of the
+    // block's type), else "member" (a uniform of its own); the GL side fills
+    // each block's buffer from the uniforms so named (gl/uniform_blocks.h).
+    std::vector<GlslStruct> block_types;
+    std::vector<std::vector<GlslVariable>> block_uniforms(2);
+    for (int k = 0; k < 2; ++k) {
+        const GlslStage& s = k == 0 ? vert : frag;
+        for (const GlslBlock& b : s.blocks) {
+            if (b.storage != "uniform") continue;
+            if (b.array_size) refuse(s, b.line, "an arrayed uniform block ('" + b.name + "'): not modelled");
+            if (b.instance.empty()) {
+                for (const GlslVariable& m : b.members) block_uniforms[size_t(k)].push_back(m);
+                continue;
+            }
+            block_types.push_back({b.name, b.members});
+            GlslVariable v;
+            v.type = b.name, v.name = b.instance, v.gl_name = b.name, v.line = b.line;
+            block_uniforms[size_t(k)].push_back(v);
+        }
+    }
     // Attributes: location N is the Nth vec4 of each vertex.
     for (const GlslVariable& v : vert.inputs) {
         if (v.location < 0)
@@ -177,16 +193,22 @@ Interface interface_of(const GlslStage& vert, const GlslStage& frag) {
                "the fragment stage must write one vec4 output (location 0): twins write one colour");
     // Uniforms: each stage's, and all of them once.
     std::set<std::string> structs_used;
-    for (const GlslStage* s : {&vert, &frag})
-        for (const GlslVariable& u : s->uniforms) {
+    GlslStage vert_types = vert, frag_types = frag;  // the stages' structs and the blocks' types
+    for (const GlslStruct& t : block_types) vert_types.structs.push_back(t), frag_types.structs.push_back(t);
+    for (int k = 0; k < 2; ++k) {
+        const GlslStage* s = k == 0 ? &vert_types : &frag_types;
+        std::vector<GlslVariable> all = (k == 0 ? vert : frag).uniforms;
+        for (const GlslVariable& b : block_uniforms[size_t(k)]) all.push_back(b);
+        for (const GlslVariable& u : all) {
             check_uniform_type(*s, u, structs_used);
-            (s == &vert ? in.vertex_uniforms : in.fragment_uniforms).push_back(u);
-            const auto same = std::find_if(in.uniforms.begin(), in.uniforms.end(), [&](const GlslVariable& o) { return o.name == u.name; });
+            (k == 0 ? in.vertex_uniforms : in.fragment_uniforms).push_back(u);
+            const auto same = std::find_if(in.uniforms.begin(), in.uniforms.end(), [&](const GlslVariable& o) { return o.gl() == u.gl(); });
             if (same == in.uniforms.end()) in.uniforms.push_back(u);
             else if (same->type != u.type || same->array_size != u.array_size)
                 refuse(*s, u.line, "uniform '" + u.name + "' is " + same->type + " in the other stage");
         }
-    for (const GlslStage* s : {&vert, &frag})
+    }
+    for (const GlslStage* s : {&vert_types, &frag_types})
         for (const GlslStruct& st : s->structs)
             if (structs_used.count(st.name) &&
                 std::none_of(in.structs.begin(), in.structs.end(), [&](const GlslStruct& o) { return o.name == st.name; }))
@@ -218,6 +240,9 @@ std::string member_type(const std::string& t) {
         {"uint", "uint32_t"},        {"uvec2", "glm::uvec2"},     {"uvec3", "glm::uvec3"},     {"uvec4", "glm::uvec4"},
         {"bool", "bool"},            {"bvec2", "glm::bvec2"},     {"bvec3", "glm::bvec3"},     {"bvec4", "glm::bvec4"},
         {"mat2", "glm::mat2"},       {"mat3", "glm::mat3"},       {"mat4", "glm::mat4"},
+        {"mat2x2", "glm::mat2"},     {"mat3x3", "glm::mat3"},     {"mat4x4", "glm::mat4"},
+        {"mat2x3", "glm::mat2x3"},   {"mat2x4", "glm::mat2x4"},   {"mat3x2", "glm::mat3x2"},
+        {"mat3x4", "glm::mat3x4"},   {"mat4x2", "glm::mat4x2"},   {"mat4x3", "glm::mat4x3"},
         {"sampler2D", "const st::Sampler2D*"}, {"samplerCube", "const st::SamplerCube*"}};
     const auto it = types.find(t);
     return it == types.end() ? t : it->second;  // a struct: its mirror
@@ -236,6 +261,7 @@ std::string getter(const std::string& t, const std::string& gl) {
     if (t == "sampler2D") return "&b.sampler(" + gl + ")";
     if (t == "samplerCube") return "&b.sampler_cube(" + gl + ")";
     if (t.rfind("bvec", 0) == 0) return "glm::" + t + "(b.get_i" + t.substr(1) + "(" + gl + "))";
+    if (t == "mat2x2" || t == "mat3x3" || t == "mat4x4") return "b.get_" + t.substr(0, 4) + "(" + gl + ")";
     return "b.get_" + t + "(" + gl + ")";
 }
 
@@ -338,7 +364,7 @@ void other_functions(const GlslStage& s, const char* lanes, std::ostringstream& 
 void bind_function(const Interface& in, const std::vector<GlslVariable>& uniforms, const std::string& cls, std::ostringstream& o) {
     if (uniforms.empty()) return;
     o << "\nvoid " << cls << "::bind(const st::Bindings& b) {\n";
-    for (const GlslVariable& u : uniforms) bind_lines(in, u, u.name + "_", "\"" + u.name + "\"", "    ", o);
+    for (const GlslVariable& u : uniforms) bind_lines(in, u, u.name + "_", "\"" + u.gl() + "\"", "    ", o);
     o << "}\n";
 }
 
@@ -440,8 +466,8 @@ void read_lines(const Interface& in, const GlslVariable& u, const std::string& r
           << ", draw.uniforms" << (gl.empty() ? "" : ", " + gl) << ");  // " << u.type << " " << u.name << array << "\n";
         return;
     }
-    const std::string name = gl.empty() ? "std::string(\"" + u.name + "\")" : gl;
-    o << indent << "{  // " << u.type << " " << u.name << array << "\n";
+    const std::string name = gl.empty() ? "std::string(\"" + u.gl() + "\")" : gl;
+    o << indent << "{  // " << u.type << " " << u.gl() << array << "\n";
     if (u.array_size) {
         const std::string n = std::to_string(u.array_size), item = "items" + d + "[size_t(i" + d + ")]";
         o << indent << "    std::vector<st::JsonReader> items" << d << " = " << r << ".objects(\"" << u.name << "\", " << n
@@ -451,7 +477,7 @@ void read_lines(const Interface& in, const GlslVariable& u, const std::string& r
                        depth + 1, o);
         o << indent << "        " << item << ".finish();\n" << indent << "    }\n";
     } else {
-        o << indent << "    st::JsonReader fields" << d << " = " << r << ".object(\"" << u.name << "\");\n";
+        o << indent << "    st::JsonReader fields" << d << " = " << r << ".object(\"" << u.gl() << "\");\n";
         for (const GlslVariable& m : st->members)
             read_lines(in, m, "fields" + d, name + " + \"." + m.name + "\"", indent + "    ", depth + 1, o);
         o << indent << "    fields" << d << ".finish();\n";
@@ -553,7 +579,7 @@ std::string scene_json(const Names& n, const Interface& in) {
         {"height", 128},
         {"grid", 8}};
     int seed = 0;
-    for (const GlslVariable& u : in.uniforms) fields.push_back({u.name, default_value(in, u, seed)});
+    for (const GlslVariable& u : in.uniforms) fields.push_back({u.gl(), default_value(in, u, seed)});
     std::string out = "{\n";
     for (size_t i = 0; i < fields.size(); ++i)
         out += "  " + nlohmann::json(fields[i].first).dump() + ": " + fields[i].second.dump() + (i + 1 < fields.size() ? ",\n" : "\n");

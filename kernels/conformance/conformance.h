@@ -1,10 +1,15 @@
-// conformance.h: twins of the conformance programs (glsl/conformance/*.frag),
-// one class per GLSL file, each .cpp named after its GLSL file. Their vertex
-// stage is the textured one (kernels/triangles/textured.h): varying 0 is the
-// colour, varying 1 the uv.
+// conformance.h: twins of the conformance programs (glsl/conformance/*.frag,
+// and builtins_vertex.vert), one class per GLSL file, each .cpp named after
+// its GLSL file. Their vertex stage is the textured one
+// (kernels/triangles/textured.h) unless a scene names another: varying 0 is
+// the colour, varying 1 the uv.
 #pragma once
 
+#include <array>
+
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "shading/program.h"
 
@@ -66,6 +71,23 @@ public:
 
 private:
     float zero_ = 0.0f;
+};
+
+class UniformBlockFragment final : public FragmentProgram<UniformBlockFragment> {  // uniform_block.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    struct Light {  // the block Light, instance light
+        glm::vec3 colour{0.0f};
+        float power = 0.0f;
+        glm::vec2 offset{0.0f};
+    } light_;
+    glm::vec4 tint_{0.0f};
+    std::array<float, 3> gain_{};
+    int count_ = 0;
 };
 
 // builtins_vertex.vert: the built-ins in the vertex stage, per cell.
