@@ -4,6 +4,7 @@
 #include "kernels/conformance/conformance.h"
 
 #include <bit>
+#include <glm/matrix.hpp>
 
 #include "kernels/conformance/builtin_inputs.h"
 
@@ -12,6 +13,11 @@ namespace st {
 namespace {
 constexpr int position = 0, uv = 2;    // inputs
 constexpr int v_colour = 0, v_uv = 1;  // outputs
+// The edges with NaN's place taken by -2 (the GLSL's `others`).
+constexpr int32_t kOthers[16] = {0x00000000, INT32_MIN,  0x3F800000,          int32_t(0xBF800000),
+                                 0x3F000000, 0x40200000, int32_t(0xC0700000), 0x0DA24260,
+                                 int32_t(0xF149F2CA), 0x7F61B1E6, 0x7F800000, int32_t(0xFF800000),
+                                 int32_t(0xC0000000), 0x00400000, 0x3DCCCCCD, 0x40E00000};
 }  // namespace
 
 float BuiltinsVertex::value(int index, int k) {
@@ -29,6 +35,9 @@ void BuiltinsVertex::run(const glm::vec4* attributes, VertexOut& out) const {
     const uint32_t mantissa = uint32_t(in::kMantissas[(index >> 9) & 7]);
     const float x = std::bit_cast<float>((sign_bit << 31) | (exponent << 23) | mantissa);
     const float y = std::bit_cast<float>(in::kEdges[(index ^ (index >> 4) ^ (index >> 8)) & 15]);
+    const float w = std::bit_cast<float>(kOthers[(index ^ (index >> 4) ^ (index >> 8)) & 15]);
+    const float z = std::bit_cast<float>(kOthers[((index >> 2) ^ (index >> 7) ^ 5) & 15]);
+    const int ix = glsl::floatBitsToInt(x);
     const glm::vec3 a(value(index, 0), value(index, 1), value(index, 2));
     const glm::vec3 b(value(index, 3), value(index, 4), value(index, 5));
     glm::vec4 r;
@@ -46,6 +55,30 @@ void BuiltinsVertex::run(const glm::vec4* attributes, VertexOut& out) const {
         const glm::vec3 n = glsl::normalize(b);
         r = glm::vec4(glsl::length(a), glsl::dot(a, b), glsl::reflect(a, n).x,
                       glsl::refract_constant_eta(glsl::normalize(a), n, 0.66f).y);
+    } else if (group_ == 7) {
+        r = glm::vec4(glsl::sinh(x), glsl::cosh(x), glsl::asinh(x), glsl::atanh(x));
+    } else if (group_ == 8) {
+        r = glm::vec4(glsl::sign(x), glsl::trunc(x), glsl::round(x), glsl::roundEven(x));
+    } else if (group_ == 9) {
+        r = glm::vec4(glsl::ceil(x), glsl::clamp(x, glsl::min(w, z), glsl::max(w, z)), glsl::step(w, x),
+                      glsl::smoothstep(glsl::min(w, z), glsl::max(w, z), x));
+    } else if (group_ == 10) {
+        r = glm::vec4(glsl::intBitsToFloat(glsl::bitCount(ix)), glsl::intBitsToFloat(glsl::findLSB(ix)),
+                      glsl::intBitsToFloat(glsl::findMSB(ix)), glsl::intBitsToFloat(glsl::bitfieldReverse(ix)));
+    } else if (group_ == 11) {
+        r = glm::vec4(glsl::uintBitsToFloat(glsl::packUnorm2x16(glm::vec2(x, w))),
+                      glsl::uintBitsToFloat(glsl::packSnorm4x8(glm::vec4(x, w, z, 0.5f))),
+                      glsl::uintBitsToFloat(glsl::packHalf2x16(glm::vec2(x, w))),
+                      glsl::unpackHalf2x16(std::bit_cast<uint32_t>(ix)).x);
+    } else if (group_ == 12) {
+        r = glm::vec4(glsl::cross(a, b).y, glsl::faceforward(a, b, glm::vec3(a.y, a.z, a.x)).z, glsl::distance(a, b),
+                      glsl::normalize(a).x);
+    } else if (group_ == 13) {
+        const glm::mat2 m2{glm::vec2(a), glm::vec2(b)};
+        const glm::mat4 m4(glm::vec4(a, b.x), glm::vec4(b.y, b.z, a.x, a.y),
+                           glm::vec4(value(index, 6), value(index, 7), value(index, 8), a.z), glm::vec4(b, 1.0f));
+        // outerProduct and transpose round nothing (one product, or none, per element): glm's are exact.
+        r = glm::vec4(glsl::determinant(m4), glsl::inverse(m2)[1].x, glm::outerProduct(a, b)[2].y, glm::transpose(m4)[0].w);
     } else {
         const glm::mat3 m(a, b, glm::vec3(value(index, 6), value(index, 7), value(index, 8)));
         const glm::mat3 inv = glsl::inverse(m);
