@@ -13,6 +13,8 @@
 //  11: packUnorm2x16, packSnorm4x8, packHalf2x16, unpackHalf2x16
 //  12: cross, faceforward, distance, normalize
 //  13: determinant (mat4), inverse (mat2), outerProduct, transpose
+//  14: mix(x, w, 0.25), fma(x, w, z), ldexp(x, e), frexp's mantissa
+//  15: isnan and isinf, frexp's exponent, any(lessThan), all(greaterThanEqual)
 // x takes both signs, every exponent (zeros, denormals, infinities and NaNs
 // among them) and eight mantissa patterns: 4096 cells on 64x64; y comes from
 // a table of edges, w and z from it with NaN's place taken by -2 (where two
@@ -37,6 +39,7 @@ const int mantissas[8] = int[8](0, 1, 0x400000, 0x7FFFFF, 0x2AAAAA, 0x555555, 0x
 const int edges[16] = int[16](0x00000000, int(0x80000000), 0x3F800000, int(0xBF800000), 0x3F000000, 0x40200000,
                               int(0xC0700000), 0x0DA24260, int(0xF149F2CA), 0x7F61B1E6, 0x7F800000, int(0xFF800000),
                               0x7FC00000, 0x00400000, 0x3DCCCCCD, 0x40E00000);
+const int exponents[16] = int[16](0, 1, -1, 127, -127, 128, -126, 254, -254, 10, -10, 255, -300, 300, 23, -23);
 const int others[16] = int[16](0x00000000, int(0x80000000), 0x3F800000, int(0xBF800000), 0x3F000000, 0x40200000,
                                int(0xC0700000), 0x0DA24260, int(0xF149F2CA), 0x7F61B1E6, 0x7F800000, int(0xFF800000),
                                int(0xC0000000), 0x00400000, 0x3DCCCCCD, 0x40E00000);
@@ -60,6 +63,7 @@ void main() {
     float w = intBitsToFloat(others[(index ^ (index >> 4) ^ (index >> 8)) & 15]);
     float z = intBitsToFloat(others[((index >> 2) ^ (index >> 7) ^ 5) & 15]);
     int ix = floatBitsToInt(x);
+    int e = exponents[((index >> 1) ^ (index >> 6)) & 15];
     vec3 a = vec3(value(index, 0), value(index, 1), value(index, 2));
     vec3 b = vec3(value(index, 3), value(index, 4), value(index, 5));
     vec4 r;
@@ -95,6 +99,14 @@ void main() {
         mat4 m4 = mat4(vec4(a, b.x), vec4(b.yz, a.xy), vec4(value(index, 6), value(index, 7), value(index, 8), a.z),
                        vec4(b, 1.0));
         r = vec4(determinant(m4), inverse(m2)[1].x, outerProduct(a, b)[2].y, transpose(m4)[0].w);
+    } else if (group == 14) {
+        int fe;
+        r = vec4(mix(x, w, 0.25), fma(x, w, z), ldexp(x, e), frexp(x, fe));
+    } else if (group == 15) {
+        int fe;
+        float m = frexp(x, fe);
+        r = vec4(float(isnan(x)) + 2.0 * float(isinf(x)), intBitsToFloat(fe),
+                 float(any(lessThan(vec2(x, w), vec2(z, x)))), float(all(greaterThanEqual(vec3(x, w, z), vec3(z, x, w)))));
     } else {
         mat3 m = mat3(a, b, vec3(value(index, 6), value(index, 7), value(index, 8)));
         mat3 inv = inverse(m);

@@ -13,6 +13,7 @@ namespace st {
 namespace {
 constexpr int position = 0, uv = 2;    // inputs
 constexpr int v_colour = 0, v_uv = 1;  // outputs
+constexpr int kExponents[16] = {0, 1, -1, 127, -127, 128, -126, 254, -254, 10, -10, 255, -300, 300, 23, -23};
 // The edges with NaN's place taken by -2 (the GLSL's `others`).
 constexpr int32_t kOthers[16] = {0x00000000, INT32_MIN,  0x3F800000,          int32_t(0xBF800000),
                                  0x3F000000, 0x40200000, int32_t(0xC0700000), 0x0DA24260,
@@ -38,6 +39,7 @@ void BuiltinsVertex::run(const glm::vec4* attributes, VertexOut& out) const {
     const float w = std::bit_cast<float>(kOthers[(index ^ (index >> 4) ^ (index >> 8)) & 15]);
     const float z = std::bit_cast<float>(kOthers[((index >> 2) ^ (index >> 7) ^ 5) & 15]);
     const int ix = glsl::floatBitsToInt(x);
+    const int e = kExponents[((index >> 1) ^ (index >> 6)) & 15];
     const glm::vec3 a(value(index, 0), value(index, 1), value(index, 2));
     const glm::vec3 b(value(index, 3), value(index, 4), value(index, 5));
     glm::vec4 r;
@@ -79,6 +81,17 @@ void BuiltinsVertex::run(const glm::vec4* attributes, VertexOut& out) const {
                            glm::vec4(value(index, 6), value(index, 7), value(index, 8), a.z), glm::vec4(b, 1.0f));
         // outerProduct and transpose round nothing (one product, or none, per element): glm's are exact.
         r = glm::vec4(glsl::determinant(m4), glsl::inverse(m2)[1].x, glm::outerProduct(a, b)[2].y, glm::transpose(m4)[0].w);
+    } else if (group_ == 14) {
+        int fe = 0;
+        // A constant t: the strict form (compiler-rewrites.md, entries 1 and 2).
+        r = glm::vec4(glsl::mix_strict(x, w, 0.25f), glsl::fma(x, w, z), glsl::ldexp(x, e), glsl::frexp(x, fe));
+    } else if (group_ == 15) {
+        int fe = 0;
+        [[maybe_unused]] const float m = glsl::frexp(x, fe);
+        // Comparisons round nothing: glm's lessThan and greaterThanEqual are GLSL's (false with a NaN).
+        r = glm::vec4(float(glsl::isnan(x)) + 2.0f * float(glsl::isinf(x)), glsl::intBitsToFloat(fe),
+                      float(glm::any(glm::lessThan(glm::vec2(x, w), glm::vec2(z, x)))),
+                      float(glm::all(glm::greaterThanEqual(glm::vec3(x, w, z), glm::vec3(z, x, w)))));
     } else {
         const glm::mat3 m(a, b, glm::vec3(value(index, 6), value(index, 7), value(index, 8)));
         const glm::mat3 inv = glsl::inverse(m);
