@@ -47,7 +47,11 @@ struct Uniform {
 // Storage formats. Texels are given to both backends as RGBA8 bytes or as
 // RGBA floats whatever the format; R32F keeps red, RGBA16F stores halves,
 // and both backends convert the same way (texture/texel_formats.h).
-enum class TextureFormat { RGBA8, R32F, RGBA16F, RGBA32F };
+// SRGB8_ALPHA8 holds sRGB-encoded bytes, which the sampler decodes per
+// texel before filtering, as llvmpipe does (texture/srgb_decode.h).
+enum class TextureFormat { RGBA8, R32F, RGBA16F, RGBA32F, SRGB8_ALPHA8 };
+// Whether the texels are bytes (texels8) rather than floats (texels32).
+inline bool holds_bytes(TextureFormat f) { return f == TextureFormat::RGBA8 || f == TextureFormat::SRGB8_ALPHA8; }
 enum class TextureFilter { Nearest, Linear };   // filter within a level
 enum class MipFilter { None, Nearest, Linear }; // filter between levels
 enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };

@@ -129,6 +129,7 @@ GLenum gl_internal_format(TextureFormat f) {
         case TextureFormat::R32F: return GL_R32F;
         case TextureFormat::RGBA16F: return GL_RGBA16F;
         case TextureFormat::RGBA32F: return GL_RGBA32F;
+        case TextureFormat::SRGB8_ALPHA8: return GL_SRGB8_ALPHA8;
     }
     return GL_RGBA32F;
 }
@@ -179,7 +180,7 @@ void upload_texture(const GlApi& gl, const Texture& tex) {
         for (int face = 0; face < tex.faces(); ++face) {
             const GLenum image = tex.cube ? GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face) : GL_TEXTURE_2D;
             const size_t at = size_t(face) * face_values;
-            if (tex.format == TextureFormat::RGBA8)
+            if (holds_bytes(tex.format))
                 gl.TexSubImage2D(image, level, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE,
                                 (l ? l->texels8.data() : tex.texels8.data()) + at);
             else

@@ -11,7 +11,9 @@ ParamSpace pattern_texture_fields(bool render_targets) {
     const std::vector<std::string> wraps = {"repeat", "clamp", "mirrored_repeat"};
     const std::vector<std::string> mins = {"nearest", "linear", "nearest_mipmap_nearest", "linear_mipmap_nearest",
                                            "nearest_mipmap_linear", "linear_mipmap_linear"};
-    s.choice("format", {"rgba8", "r32f", "rgba16f", "rgba32f"}, "rgba32f", "texel format");
+    s.choice("format", {"rgba8", "r32f", "rgba16f", "rgba32f", "srgb8_alpha8"}, "rgba32f",
+             "texel format; `srgb8_alpha8` holds sRGB-encoded bytes that the sampler decodes per texel before "
+             "filtering, as GL_SRGB8_ALPHA8 (2D textures)");
     s.choice("wrap", wraps, "repeat", "both directions' wrap mode (clamp: to edge)");
     s.choice("wrap_s", wraps, nullptr, "the s direction's (default: `wrap`)");
     s.choice("wrap_t", wraps, nullptr, "the t direction's (default: `wrap`)");
@@ -56,7 +58,7 @@ ParamSpace pattern_texture_fields(bool render_targets) {
              "the files' encoding: `srgb` is decoded to linear on load (IEC 61966-2-1, alpha as stored), as an asset "
              "pipeline does, and the texture holds linear values in `format`; `linear` is taken as stored; `auto` is "
              "what the file says it is, else sRGB for integer pixels (PNG, JPEG) and linear for float ones (EXR, "
-             "HDR). (An sRGB texture format, decoded by the sampler per texel, is not modelled.)")
+             "HDR). With `format` `srgb8_alpha8` the texels are encoded back to sRGB bytes, which the sampler decodes")
         .when("pattern", {"file"});
     s.choice("orientation", {"upright", "as_stored"}, "upright",
              "`upright`: a 2D texture's t = 1 is the picture's top row (the rows are flipped on upload, as OpenGL "

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "image/image_io.h"
-#include "image/srgb.h"
+#include "texture/srgb.h"
 #include "scene/input_error.h"
 
 namespace st {
@@ -59,7 +59,9 @@ void face_texels(const Image& image, const ImageFileFormat& format, bool srgb, b
             for (int c = 0; c < 4; ++c) {
                 double v = stored_value(rgba[c], format);
                 if (srgb && c < 3) v = srgb_to_linear(v);  // alpha is stored linear
-                if (t.format == TextureFormat::RGBA8) texels8.push_back(unit_to_byte(std::isnan(v) ? 0.0 : v));
+                if (t.format == TextureFormat::SRGB8_ALPHA8 && c < 3)  // encoded again: a PNG's bytes come through
+                    texels8.push_back(unit_to_byte(linear_to_srgb(v)));
+                else if (holds_bytes(t.format)) texels8.push_back(unit_to_byte(std::isnan(v) ? 0.0 : v));
                 else texels32.push_back(float(v));
             }
         }
@@ -103,7 +105,7 @@ void read_texture_files(JsonReader& r, Texture& t, TexelBudget& budget) {
                 throw InputError(where + ": a cube map's faces must be square (" + std::to_string(t.width) + "x" +
                                  std::to_string(t.height) + ")");
             budget.take(uint64_t(t.width) * uint64_t(t.height) * uint64_t(t.faces()) *
-                            (t.format == TextureFormat::RGBA8 ? 4u : 16u),
+                            (holds_bytes(t.format) ? 4u : 16u),
                         field);
         } else if (image.width != t.width || image.height != t.height) {
             throw InputError(where + ": " + std::to_string(image.width) + "x" + std::to_string(image.height) +

@@ -13,7 +13,7 @@
 #include <unistd.h>
 
 #include "image/image_io.h"
-#include "image/srgb.h"
+#include "texture/srgb.h"
 #include "scene/input_error.h"
 #include "scene/scene.h"
 #include "scene/scene_sources.h"

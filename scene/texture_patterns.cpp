@@ -33,7 +33,7 @@ namespace {
 void fill(int width, int height, TextureFormat format, bool checker, uint32_t seed, std::vector<uint8_t>& texels8,
           std::vector<float>& texels32) {
     const size_t n = size_t(width) * size_t(height) * 4;
-    if (format == TextureFormat::RGBA8) texels8.resize(n);
+    if (holds_bytes(format)) texels8.resize(n);
     else texels32.resize(n);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x)
@@ -42,7 +42,7 @@ void fill(int width, int height, TextureFormat format, bool checker, uint32_t se
                 uint32_t h = hash32(seed * 0x9e3779b9u ^ hash32(uint32_t(i)));
                 if (checker) h = ((x / 4 + y / 4) % 2) ? 0xe0000000u + (uint32_t(c) << 26) : 0x20000000u;
                 if (c == 3 && !checker) h |= 0x80000000u;  // alpha in [0.5, 1)
-                if (format == TextureFormat::RGBA8) texels8[i] = uint8_t(h >> 24);
+                if (holds_bytes(format)) texels8[i] = uint8_t(h >> 24);
                 else texels32[i] = float(h >> 8) * (1.0f / 16777216.0f);  // 24 bits: exact
             }
 }
@@ -112,10 +112,11 @@ Texture read_pattern_texture(JsonReader& r, const std::string& sampler, TexelBud
     t.sampler = sampler;
     // Every field's domain and default: pattern_texture_fields() in scene/shared_spaces.cpp.
     const std::string format = r.choice("format");
-    t.format = format == "rgba8"     ? TextureFormat::RGBA8
-               : format == "r32f"    ? TextureFormat::R32F
-               : format == "rgba16f" ? TextureFormat::RGBA16F
-                                     : TextureFormat::RGBA32F;
+    t.format = format == "rgba8"          ? TextureFormat::RGBA8
+               : format == "r32f"         ? TextureFormat::R32F
+               : format == "rgba16f"      ? TextureFormat::RGBA16F
+               : format == "srgb8_alpha8" ? TextureFormat::SRGB8_ALPHA8
+                                          : TextureFormat::RGBA32F;
     // wrap_s and wrap_t default to wrap, mag_filter and min_filter to filter.
     const std::string wrap = r.choice("wrap");
     t.wrap_s = wrap_named(r.has("wrap_s") ? r.choice("wrap_s") : wrap);
@@ -148,6 +149,8 @@ Texture read_pattern_texture(JsonReader& r, const std::string& sampler, TexelBud
             throw InputError("field '" + r.field("height") + "': a cube map's faces must be square (width " +
                              std::to_string(t.width) + ", height " + std::to_string(t.height) + ")");
     }
+    if (t.cube && t.format == TextureFormat::SRGB8_ALPHA8)
+        throw InputError("field '" + r.field("format") + "': an srgb8_alpha8 cube map is not modelled (2D textures only)");
     if (t.cube && t.min_filter != t.mag_filter)
         throw InputError("field '" + r.field("mag_filter") +
                          "': a cube map needs the same min and mag filter (the switch is not modelled)");
@@ -165,7 +168,7 @@ Texture read_pattern_texture(JsonReader& r, const std::string& sampler, TexelBud
     uint64_t bytes = 0;
     for (int level = from_files ? 1 : 0; level < levels; ++level)
         bytes += uint64_t(std::max(1, t.width >> level)) * uint64_t(std::max(1, t.height >> level)) *
-                 uint64_t(t.faces()) * (t.format == TextureFormat::RGBA8 ? 4u : 16u);
+                 uint64_t(t.faces()) * (holds_bytes(t.format) ? 4u : 16u);
     budget.take(bytes, r.field(from_files ? "mipmaps" : "width"));
     const bool checker = pattern == "checker";
     const auto seed = from_files ? 0u : uint32_t(r.integer("seed"));

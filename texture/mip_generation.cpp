@@ -1,6 +1,8 @@
 // mip_generation.cpp: see mip_generation.h.
 #include "texture/mip_generation.h"
 
+#include "texture/srgb.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -21,7 +23,9 @@ std::vector<double> base_texels(const Texture& t) {
     const size_t n = size_t(t.width) * size_t(t.height) * 4 * size_t(t.faces());
     std::vector<double> out(n);
     for (size_t i = 0; i < n; ++i)
-        out[i] = t.format == TextureFormat::RGBA8 ? t.texels8[i] / 255.0 : double(t.texels32[i]);
+        out[i] = t.format == TextureFormat::RGBA8          ? t.texels8[i] / 255.0
+                 : t.format == TextureFormat::SRGB8_ALPHA8 ? (i % 4 == 3 ? t.texels8[i] / 255.0 : srgb_to_linear(t.texels8[i] / 255.0))
+                                                           : double(t.texels32[i]);
     return out;
 }
 
@@ -53,7 +57,9 @@ void box_face(const Texture& t, const std::vector<double>& base, int face, Textu
                 }
             const size_t o = (level_face + size_t(y) * size_t(l.width) + size_t(x)) * 4;
             for (int c = 0; c < 4; ++c) {
-                if (t.format == TextureFormat::RGBA8)
+                if (t.format == TextureFormat::SRGB8_ALPHA8 && c < 3)  // filtered in linear, stored encoded
+                    l.texels8[o + size_t(c)] = uint8_t(std::lround(linear_to_srgb(sum[c]) * 255.0));
+                else if (holds_bytes(t.format))
                     l.texels8[o + size_t(c)] = uint8_t(std::lround(std::clamp(sum[c], 0.0, 1.0) * 255.0));
                 else
                     l.texels32[o + size_t(c)] = float(sum[c]);
@@ -72,7 +78,7 @@ void generate_box_mips(Texture& t, int levels) {
         l.width = std::max(1, t.width >> level);
         l.height = std::max(1, t.height >> level);
         const size_t n = size_t(l.width) * size_t(l.height) * 4 * size_t(t.faces());
-        if (t.format == TextureFormat::RGBA8) l.texels8.resize(n);
+        if (holds_bytes(t.format)) l.texels8.resize(n);
         else l.texels32.resize(n);
         for (int face = 0; face < t.faces(); ++face) box_face(t, base, face, l);
         t.mips.push_back(std::move(l));
@@ -85,7 +91,7 @@ bool mip_sizes_valid(const Texture& t, std::string& why) {
         const int w = std::max(1, t.width >> level), h = std::max(1, t.height >> level);
         const TextureLevel& l = t.mips[i];
         const size_t n = size_t(w) * size_t(h) * 4 * size_t(t.faces());
-        const size_t have = t.format == TextureFormat::RGBA8 ? l.texels8.size() : l.texels32.size();
+        const size_t have = holds_bytes(t.format) ? l.texels8.size() : l.texels32.size();
         if (l.width != w || l.height != h || have != n) {
             why = "level " + std::to_string(level) + " is " + std::to_string(l.width) + "x" +
                   std::to_string(l.height) + ", expected " + std::to_string(w) + "x" + std::to_string(h);

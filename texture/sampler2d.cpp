@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "texture/srgb_decode.h"
 #include "texture/texel_formats.h"
 #include "texture/lod_selection.h"
 #include "texture/texel_math.h"
@@ -142,6 +143,15 @@ Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
         if (aos_ && needs_lod() && texture.min_filter == TextureFilter::Linear &&
             texture.mag_filter == TextureFilter::Linear)
             build_alpha_quads();
+    } else if (texture.format == TextureFormat::SRGB8_ALPHA8) {
+        // llvmpipe decodes each texel and takes the float path from there.
+        rgba32_.assign((texels + 1) * 4, 0.0f);
+        for (int l = 0; l <= last_level_; ++l) {
+            const uint8_t* in = level_bytes(l);
+            float* out = &rgba32_[size_t(level_base_[size_t(l)]) * 4];
+            const size_t n = size_t(level_width_[size_t(l)]) * size_t(level_height_[size_t(l)]) * 4;
+            for (size_t i = 0; i < n; ++i) out[i] = i % 4 == 3 ? srgb_texel_alpha(in[i]) : srgb_texel_colour(in[i]);
+        }
     } else {
         rgba32_.assign((texels + 1) * 4, 0.0f);  // + 1: the right tap of row_pair's last pair
         for (int l = 0; l <= last_level_; ++l) {
