@@ -14,7 +14,8 @@
 // - trigonometry.h: radians ... atanh, atan of one and two arguments;
 // - relational.h: lessThan ... notEqual, any, all, not_ (lane vectors);
 // - matrix.h: matrixCompMult, outerProduct, transpose, determinant, inverse
-//   (the products are simd/lane_mat.h's operators);
+//   (the products are simd/lane_mat.h's operators for lanes;
+//   glm_products.h's glsl::mul for vertex twins' glm matrices);
 // - integer.h: uaddCarry ... findMSB; packing.h: pack/unpack Unorm, Snorm, Half;
 // - folded.h: the host C library's values, which built-ins of constants fold to;
 // - selection.h: the ternary per lane, and if/else that skips a side;
@@ -31,17 +32,10 @@
 #include "shading/builtins/exponential.h"
 #include "shading/builtins/folded.h"
 #include "shading/builtins/geometric.h"
+#include "shading/builtins/glm_products.h"
 #include "shading/builtins/integer.h"
 #include "shading/builtins/matrix.h"
 #include "shading/builtins/packing.h"
 #include "shading/builtins/relational.h"
 #include "shading/builtins/selection.h"
 #include "shading/builtins/trigonometry.h"
-
-namespace st::glsl {
-
-// GLSL m * v: the column sum ((c0 v.x + c1 v.y) + c2 v.z) + c3 v.w, each
-// product rounded (GLSL IR's matrix lowering).
-glm::vec4 mul(const glm::mat4& m, const glm::vec4& v);
-
-}  // namespace st::glsl

@@ -338,6 +338,60 @@ TEST(GlslMath, MatrixFormsAgreeAndKeepMesasOrder) {
     EXPECT_EQ(glsl::transpose(t)[2][1][0], g[1][2]);
 }
 
+// glsl::mul of glm matrices (vertex twins) gives the bits of the lane
+// operators (fragment twins) for every shape and all three products; and
+// glm's own v * m sums in another order, which is why mul exists.
+template <int C, int R, int K> void expect_mul_matches_lanes(std::mt19937& rng, int& glm_differs) {
+    std::uniform_real_distribution<float> d(-3.0f, 3.0f);
+    glm::mat<C, R, float> a;
+    glm::mat<K, C, float> b;
+    glm::vec<C, float> v;
+    glm::vec<R, float> u;
+    for (int c = 0; c < C; ++c)
+        for (int r = 0; r < R; ++r) a[c][r] = d(rng);
+    for (int k = 0; k < K; ++k)
+        for (int c = 0; c < C; ++c) b[k][c] = d(rng);
+    for (int c = 0; c < C; ++c) v[c] = d(rng);
+    for (int r = 0; r < R; ++r) u[r] = d(rng);
+    const auto bits = [](float x) { return std::bit_cast<uint32_t>(x); };
+    const LaneMat<C, R> la(a);
+    const LaneMat<K, C> lb(b);
+    LaneVec<Float, C> lv;
+    LaneVec<Float, R> lu;
+    for (int c = 0; c < C; ++c) lv[c] = Float(v[c]);
+    for (int r = 0; r < R; ++r) lu[r] = Float(u[r]);
+    const auto mv = glsl::mul(a, v);
+    const auto lmv = la * lv;
+    for (int r = 0; r < R; ++r) EXPECT_EQ(bits(mv[r]), bits(lmv[r][0])) << C << "x" << R << " m * v, row " << r;
+    const auto um = glsl::mul(u, a);
+    const auto lum = lu * la;
+    for (int c = 0; c < C; ++c) {
+        EXPECT_EQ(bits(um[c]), bits(lum[c][0])) << C << "x" << R << " v * m, column " << c;
+        glm_differs += bits((u * a)[c]) != bits(um[c]);
+    }
+    const auto ab = glsl::mul(a, b);
+    const auto lab = la * lb;
+    for (int k = 0; k < K; ++k)
+        for (int r = 0; r < R; ++r) EXPECT_EQ(bits(ab[k][r]), bits(lab[k][r][0])) << C << "x" << R << " a * b";
+}
+
+TEST(GlslMath, MulOfGlmMatricesIsTheLaneOperators) {
+    std::mt19937 rng(27);
+    int glm_differs = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        expect_mul_matches_lanes<2, 2, 3>(rng, glm_differs);
+        expect_mul_matches_lanes<3, 3, 3>(rng, glm_differs);
+        expect_mul_matches_lanes<4, 4, 4>(rng, glm_differs);
+        expect_mul_matches_lanes<2, 3, 3>(rng, glm_differs);
+        expect_mul_matches_lanes<3, 2, 4>(rng, glm_differs);
+        expect_mul_matches_lanes<4, 3, 2>(rng, glm_differs);
+        expect_mul_matches_lanes<3, 4, 4>(rng, glm_differs);
+        expect_mul_matches_lanes<2, 4, 2>(rng, glm_differs);
+        expect_mul_matches_lanes<4, 2, 3>(rng, glm_differs);
+    }
+    EXPECT_GT(glm_differs, 0) << "glm's v * m summed as GLSL does on every input: the order test proves nothing";
+}
+
 // gallivm's fmax/fmin (docs/llvmpipe/glsl-builtins.md 2.8): a tie gives the
 // second operand, one NaN the other operand. The twin gave -0.0 for
 // max(-0.0, 0.0) where llvmpipe gives +0.0 (explore profile --seed 2026).

@@ -15,12 +15,27 @@
 //  13: determinant (mat4), inverse (mat2), outerProduct, transpose
 //  14: mix(x, w, 0.25), fma(x, w, z), ldexp(x, e), frexp's mantissa
 //  15: isnan and isinf, frexp's exponent, any(lessThan), all(greaterThanEqual)
+//  16: uaddCarry's sum, usubBorrow's difference, umulExtended's and imulExtended's msb
+//  17: the carry and the borrow, umulExtended's and imulExtended's lsb, bitfieldExtract (int)
+//  18: bitfieldExtract (uint), bitfieldInsert, packUnorm4x8, packSnorm2x16
+//  19: unpackUnorm2x16, unpackSnorm2x16, unpackUnorm4x8, unpackSnorm4x8 (a component each)
+//  20: the vector relational functions as bits, radians, degrees, modf's fraction
+//  21: mix(x, w, t) (the fast form), mix(1.0, w, u) (from one), mix(x, w, bvec), abs
+//  22: GLSL's * of glm matrices: mat3 * vec3, vec4 * mat4, mat2x3 * mat3x2, mat4x3 * vec4
+//      (summed in another order than glm's own), matrixCompMult, determinant (mat2), inverse (mat4)
 // x takes both signs, every exponent (zeros, denormals, infinities and NaNs
 // among them) and eight mantissa patterns: 4096 cells on 64x64; y comes from
 // a table of edges, w and z from it with NaN's place taken by -2 (where two
 // NaNs meet in one + or *, the payload is the compiler's operand order:
 // glsl-builtins.md 0.3). Groups 5, 6, 12 and 13 take finite values (value()).
-// Integer results travel as their bits (intBitsToFloat).
+// Integer results travel as their bits (intBitsToFloat). Groups 16-19 take
+// ua and ub, hashes of the index with 0, 0xFFFFFFFF and 0x80000000 among
+// them, and offset and count past the spec's range (as builtins_integer.frag);
+// f.yw, the packed floats' other lanes, a ramp through [-1.28, 1.28] and
+// values next to the 8-bit rounding ties. t and u are blend weights (0, 1,
+// halves, the float below 1, -0.5, 1.5, NaN, inf, ...); the two mixes of
+// group 21 share neither (x, t) nor (w, t), so each keeps its own form
+// (glsl-builtins.md 2.13).
 // The result's bits travel as two 16-bit halves in integer-valued floats
 // (v_colour the high, v_uv the low), which every plane through three equal
 // values keeps exactly, infinities and NaN payloads included;
@@ -43,6 +58,11 @@ const int exponents[16] = int[16](0, 1, -1, 127, -127, 128, -126, 254, -254, 10,
 const int others[16] = int[16](0x00000000, int(0x80000000), 0x3F800000, int(0xBF800000), 0x3F000000, 0x40200000,
                                int(0xC0700000), 0x0DA24260, int(0xF149F2CA), 0x7F61B1E6, 0x7F800000, int(0xFF800000),
                                int(0xC0000000), 0x00400000, 0x3DCCCCCD, 0x40E00000);
+// Blend weights: 0, 1, 0.5, 0.25, 0.1, 0.9, 1e-8, the float below 1, -0.5,
+// 1.5, -0, 2, NaN, inf, 0.3, 0.7.
+const int weights[16] = int[16](0x00000000, 0x3F800000, 0x3F000000, 0x3E800000, 0x3DCCCCCD, 0x3F666666,
+                                0x322BCC77, 0x3F7FFFFF, int(0xBF000000), 0x3FC00000, int(0x80000000), 0x40000000,
+                                0x7FC00000, 0x7F800000, 0x3E99999A, 0x3F333333);
 
 // A finite value for component k: one of 1024 steps of 0.0137 around zero,
 // scaled by 2^-6 ... 2^9.
@@ -66,6 +86,18 @@ void main() {
     int e = exponents[((index >> 1) ^ (index >> 6)) & 15];
     vec3 a = vec3(value(index, 0), value(index, 1), value(index, 2));
     vec3 b = vec3(value(index, 3), value(index, 4), value(index, 5));
+    float t = intBitsToFloat(weights[(index ^ (index >> 5)) & 15]);
+    float u = intBitsToFloat(weights[((index >> 3) ^ (index >> 9) ^ 9) & 15]);
+    uint ua = uint(index) * 2654435761u + 12345u;
+    uint ub = (ua ^ (ua >> 15)) * 2246822519u;
+    int kind = index & 15;
+    if (kind == 0) ua = 0u;
+    if (kind == 1) ua = 0xFFFFFFFFu;
+    if (kind == 2) ua = 0x80000000u;
+    if (kind == 3) ub = 0xFFFFFFFFu;
+    int offset = int(ub & 31u) + ((index >> 4) & 1);
+    int count = int((ub >> 5) & 31u) + ((index >> 5) & 1);
+    vec4 f = vec4(x, float((index & 1023) - 512) / 400.0, y, (float(index & 255) + 0.5) / 255.0);
     vec4 r;
     if (group == 0) {
         r = vec4(log2(x), log(x), pow(x, y), pow(abs(x), y));
@@ -107,6 +139,60 @@ void main() {
         float m = frexp(x, fe);
         r = vec4(float(isnan(x)) + 2.0 * float(isinf(x)), intBitsToFloat(fe),
                  float(any(lessThan(vec2(x, w), vec2(z, x)))), float(all(greaterThanEqual(vec3(x, w, z), vec3(z, x, w)))));
+    } else if (group == 16) {
+        uint carry, borrow, umsb, ulsb;
+        int imsb, ilsb;
+        umulExtended(ua, ub, umsb, ulsb);
+        imulExtended(int(ua), int(ub), imsb, ilsb);
+        r = vec4(uintBitsToFloat(uaddCarry(ua, ub, carry)), uintBitsToFloat(usubBorrow(ua, ub, borrow)),
+                 uintBitsToFloat(umsb), intBitsToFloat(imsb));
+    } else if (group == 17) {
+        uint carry, borrow, umsb, ulsb;
+        int imsb, ilsb;
+        uaddCarry(ua, ub, carry);
+        usubBorrow(ua, ub, borrow);
+        umulExtended(ua, ub, umsb, ulsb);
+        imulExtended(int(ua), int(ub), imsb, ilsb);
+        r = vec4(float(carry) + 2.0 * float(borrow), uintBitsToFloat(ulsb), intBitsToFloat(ilsb),
+                 intBitsToFloat(bitfieldExtract(int(ua), offset, count)));
+    } else if (group == 18) {
+        r = vec4(uintBitsToFloat(bitfieldExtract(ua, offset, count)), uintBitsToFloat(bitfieldInsert(ua, ub, offset, count)),
+                 uintBitsToFloat(packUnorm4x8(f)), uintBitsToFloat(packSnorm2x16(f.zw)));
+    } else if (group == 19) {
+        r = vec4(unpackUnorm2x16(ua)[index & 1], unpackSnorm2x16(ua)[(index >> 1) & 1],
+                 unpackUnorm4x8(ua)[index & 3], unpackSnorm4x8(ua)[(index >> 2) & 3]);
+    } else if (group == 20) {
+        bvec3 le = lessThanEqual(f.xyz, f.yzw);
+        bvec3 gt = greaterThan(f.xyz, f.yzw);
+        bvec3 eq = equal(f.xyz, f.zwx);
+        bvec3 ne = notEqual(f.xyz, f.zwx);
+        bvec2 ule = lessThanEqual(uvec2(ua, ub), uvec2(ub, ua));
+        bvec2 igt = greaterThan(ivec2(ua, ub), ivec2(ub, int(ua)));
+        bvec2 beq = equal(bvec2(le.x, gt.y), bvec2(eq.z, ne.x));
+        int relations = int(any(le)) | (int(all(gt)) << 1) | (int(any(not(eq))) << 2) | (int(all(ne)) << 3) |
+                        (int(le.y) << 4) | (int(any(ule)) << 5) | (int(all(igt)) << 6) | (int(any(beq)) << 7) |
+                        (int(notEqual(ivec2(ua, ub), ivec2(ub, ua)).y) << 8);
+        float whole;
+        r = vec4(float(relations), radians(x), degrees(x), modf(x, whole));
+    } else if (group == 21) {
+        r = vec4(mix(x, w, t), mix(1.0, w, u), mix(x, w, (index & 2) != 0), abs(x));
+    } else if (group == 22) {
+        mat3 m3 = mat3(a, b, vec3(value(index, 6), value(index, 7), value(index, 8)));
+        mat4 m4 = mat4(vec4(a, b.x), vec4(b.yz, a.xy), vec4(value(index, 6), value(index, 7), value(index, 8), a.z),
+                       vec4(b, 1.0));
+        mat2x3 m23 = mat2x3(a, b);
+        mat3x2 m32 = mat3x2(value(index, 18), value(index, 19), value(index, 20), value(index, 21), value(index, 22),
+                            value(index, 23));
+        mat4x3 m43 = mat4x3(b, a, a.zxy, vec3(value(index, 11), value(index, 12), value(index, 13)));
+        vec4 v4 = vec4(value(index, 14), value(index, 15), value(index, 16), value(index, 17));
+        int k = index & 3;
+        // One product per channel, picked by the index (a selection rounds nothing): a sum of two
+        // would be a sum NIR may reassociate (compiler-rewrites.md, entry 5). No two factors of a
+        // product's terms are the same value, or NIR factors them (entry 0): m3 * a with a in m3 does.
+        r = vec4((index & 4) != 0 ? (m3 * v4.xyz)[k % 3] : (v4 * m4)[k],
+                 (index & 8) != 0 ? (m23 * m32)[k % 3][(k + 1) % 3] : (m43 * v4)[(k + 2) % 3],
+                 (index & 16) != 0 ? matrixCompMult(m3, transpose(m3))[k % 3].y : determinant(mat2(a.xy, b.yz)),
+                 inverse(m4)[k][(index >> 2) & 3]);
     } else {
         mat3 m = mat3(a, b, vec3(value(index, 6), value(index, 7), value(index, 8)));
         mat3 inv = inverse(m);

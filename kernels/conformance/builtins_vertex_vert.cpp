@@ -19,6 +19,11 @@ constexpr int32_t kOthers[16] = {0x00000000, INT32_MIN,  0x3F800000,          in
                                  0x3F000000, 0x40200000, int32_t(0xC0700000), 0x0DA24260,
                                  int32_t(0xF149F2CA), 0x7F61B1E6, 0x7F800000, int32_t(0xFF800000),
                                  int32_t(0xC0000000), 0x00400000, 0x3DCCCCCD, 0x40E00000};
+// Blend weights: 0, 1, 0.5, 0.25, 0.1, 0.9, 1e-8, the float below 1, -0.5,
+// 1.5, -0, 2, NaN, inf, 0.3, 0.7.
+constexpr int32_t kWeights[16] = {0x00000000, 0x3F800000, 0x3F000000, 0x3E800000, 0x3DCCCCCD, 0x3F666666,
+                                  0x322BCC77, 0x3F7FFFFF, int32_t(0xBF000000), 0x3FC00000, INT32_MIN, 0x40000000,
+                                  0x7FC00000, 0x7F800000, 0x3E99999A, 0x3F333333};
 }  // namespace
 
 float BuiltinsVertex::value(int index, int k) {
@@ -42,6 +47,18 @@ void BuiltinsVertex::run(const glm::vec4* attributes, VertexOut& out) const {
     const int e = kExponents[((index >> 1) ^ (index >> 6)) & 15];
     const glm::vec3 a(value(index, 0), value(index, 1), value(index, 2));
     const glm::vec3 b(value(index, 3), value(index, 4), value(index, 5));
+    const float t = std::bit_cast<float>(kWeights[(index ^ (index >> 5)) & 15]);
+    const float u = std::bit_cast<float>(kWeights[((index >> 3) ^ (index >> 9) ^ 9) & 15]);
+    uint32_t ua = uint32_t(index) * 2654435761u + 12345u;
+    uint32_t ub = (ua ^ (ua >> 15)) * 2246822519u;
+    const int kind = index & 15;
+    if (kind == 0) ua = 0u;
+    if (kind == 1) ua = 0xFFFFFFFFu;
+    if (kind == 2) ua = 0x80000000u;
+    if (kind == 3) ub = 0xFFFFFFFFu;
+    const int offset = int(ub & 31u) + ((index >> 4) & 1);
+    const int count = int((ub >> 5) & 31u) + ((index >> 5) & 1);
+    const glm::vec4 f(x, float((index & 1023) - 512) / 400.0f, y, (float(index & 255) + 0.5f) / 255.0f);
     glm::vec4 r;
     if (group_ == 0) {
         r = glm::vec4(glsl::log2(x), glsl::log(x), glsl::pow(x, y), glsl::pow(glsl::abs(x), y));
@@ -92,6 +109,67 @@ void BuiltinsVertex::run(const glm::vec4* attributes, VertexOut& out) const {
         r = glm::vec4(float(glsl::isnan(x)) + 2.0f * float(glsl::isinf(x)), glsl::intBitsToFloat(fe),
                       float(glm::any(glm::lessThan(glm::vec2(x, w), glm::vec2(z, x)))),
                       float(glm::all(glm::greaterThanEqual(glm::vec3(x, w, z), glm::vec3(z, x, w)))));
+    } else if (group_ == 16) {
+        uint32_t carry = 0, borrow = 0, umsb = 0, ulsb = 0;
+        int32_t imsb = 0, ilsb = 0;
+        glsl::umulExtended(ua, ub, umsb, ulsb);
+        glsl::imulExtended(int32_t(ua), int32_t(ub), imsb, ilsb);
+        r = glm::vec4(glsl::uintBitsToFloat(glsl::uaddCarry(ua, ub, carry)),
+                      glsl::uintBitsToFloat(glsl::usubBorrow(ua, ub, borrow)), glsl::uintBitsToFloat(umsb),
+                      glsl::intBitsToFloat(imsb));
+    } else if (group_ == 17) {
+        uint32_t carry = 0, borrow = 0, umsb = 0, ulsb = 0;
+        int32_t imsb = 0, ilsb = 0;
+        glsl::uaddCarry(ua, ub, carry);
+        glsl::usubBorrow(ua, ub, borrow);
+        glsl::umulExtended(ua, ub, umsb, ulsb);
+        glsl::imulExtended(int32_t(ua), int32_t(ub), imsb, ilsb);
+        r = glm::vec4(float(carry) + 2.0f * float(borrow), glsl::uintBitsToFloat(ulsb), glsl::intBitsToFloat(ilsb),
+                      glsl::intBitsToFloat(glsl::bitfieldExtract(int32_t(ua), offset, count)));
+    } else if (group_ == 18) {
+        r = glm::vec4(glsl::uintBitsToFloat(glsl::bitfieldExtract(ua, offset, count)),
+                      glsl::uintBitsToFloat(glsl::bitfieldInsert(ua, ub, offset, count)),
+                      glsl::uintBitsToFloat(glsl::packUnorm4x8(f)),
+                      glsl::uintBitsToFloat(glsl::packSnorm2x16(glm::vec2(f.z, f.w))));
+    } else if (group_ == 19) {
+        r = glm::vec4(glsl::unpackUnorm2x16(ua)[index & 1], glsl::unpackSnorm2x16(ua)[(index >> 1) & 1],
+                      glsl::unpackUnorm4x8(ua)[index & 3], glsl::unpackSnorm4x8(ua)[(index >> 2) & 3]);
+    } else if (group_ == 20) {
+        // Comparisons round nothing: glm's relational functions are GLSL's (false with a NaN, but notEqual).
+        const glm::vec3 fxyz(f.x, f.y, f.z), fyzw(f.y, f.z, f.w), fzwx(f.z, f.w, f.x);
+        const glm::bvec3 le = glm::lessThanEqual(fxyz, fyzw);
+        const glm::bvec3 gt = glm::greaterThan(fxyz, fyzw);
+        const glm::bvec3 eq = glm::equal(fxyz, fzwx);
+        const glm::bvec3 ne = glm::notEqual(fxyz, fzwx);
+        const glm::bvec2 ule = glm::lessThanEqual(glm::uvec2(ua, ub), glm::uvec2(ub, ua));
+        const glm::bvec2 igt = glm::greaterThan(glm::ivec2(int32_t(ua), int32_t(ub)), glm::ivec2(int32_t(ub), int32_t(ua)));
+        const glm::bvec2 beq = glm::equal(glm::bvec2(le.x, gt.y), glm::bvec2(eq.z, ne.x));
+        const int relations = int(glm::any(le)) | (int(glm::all(gt)) << 1) | (int(glm::any(glm::not_(eq))) << 2) |
+                              (int(glm::all(ne)) << 3) | (int(le.y) << 4) | (int(glm::any(ule)) << 5) |
+                              (int(glm::all(igt)) << 6) | (int(glm::any(beq)) << 7) | (int(ua != ub) << 8);
+        float whole = 0.0f;
+        r = glm::vec4(float(relations), glsl::radians(x), glsl::degrees(x), glsl::modf(x, whole));
+    } else if (group_ == 21) {
+        // t varies and neither mix shares (x, t) or (w, t) with another: the fast form; a constant 1.0 for x:
+        // from one; a bool: a selection (compiler-rewrites.md, notes on 1 and 2).
+        r = glm::vec4(glsl::mix(x, w, t), glsl::mix_from_one(w, u), (index & 2) != 0 ? w : x, glsl::abs(x));
+    } else if (group_ == 22) {
+        const glm::mat3 m3(a, b, glm::vec3(value(index, 6), value(index, 7), value(index, 8)));
+        const glm::mat4 m4(glm::vec4(a, b.x), glm::vec4(b.y, b.z, a.x, a.y),
+                           glm::vec4(value(index, 6), value(index, 7), value(index, 8), a.z), glm::vec4(b, 1.0f));
+        const glm::mat2x3 m23(a, b);
+        const glm::mat3x2 m32(value(index, 18), value(index, 19), value(index, 20), value(index, 21), value(index, 22),
+                              value(index, 23));
+        const glm::mat4x3 m43(b, a, glm::vec3(a.z, a.x, a.y),
+                              glm::vec3(value(index, 11), value(index, 12), value(index, 13)));
+        const glm::vec4 v4(value(index, 14), value(index, 15), value(index, 16), value(index, 17));
+        const int k = index & 3;
+        // glsl::mul, not glm's `*` (glm_products.h); matrixCompMult and transpose round one product or none.
+        r = glm::vec4((index & 4) != 0 ? glsl::mul(m3, glm::vec3(v4))[k % 3] : glsl::mul(v4, m4)[k],
+                      (index & 8) != 0 ? glsl::mul(m23, m32)[k % 3][(k + 1) % 3] : glsl::mul(m43, v4)[(k + 2) % 3],
+                      (index & 16) != 0 ? glm::matrixCompMult(m3, glm::transpose(m3))[k % 3].y
+                                        : glsl::determinant(glm::mat2(glm::vec2(a.x, a.y), glm::vec2(b.y, b.z))),
+                      glsl::inverse(m4)[k][(index >> 2) & 3]);
     } else {
         const glm::mat3 m(a, b, glm::vec3(value(index, 6), value(index, 7), value(index, 8)));
         const glm::mat3 inv = glsl::inverse(m);
