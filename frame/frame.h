@@ -31,18 +31,33 @@ struct VertexArray {
 // A GLSL uniform's type as glUniform* sets it. bool and bvecN are set as
 // Int and IVecN (glUniform*i); an element of an array or a member of a
 // struct is its own Uniform, named as GL names it ("lights[2]", "mat.albedo").
+// The D types are GLSL's double, dvecN and dmatN (glUniform*d).
 enum class UniformType {
     Float, Vec2, Vec3, Vec4, Int, Mat4, IVec2, IVec3, IVec4, UInt, UVec2, UVec3, UVec4, Mat2, Mat3,
-    Mat2x3, Mat2x4, Mat3x2, Mat3x4, Mat4x2, Mat4x3  // matCxR: C columns of R rows
+    Mat2x3, Mat2x4, Mat3x2, Mat3x4, Mat4x2, Mat4x3,  // matCxR: C columns of R rows
+    Double, DVec2, DVec3, DVec4, DMat2, DMat3, DMat4, DMat2x3, DMat2x4, DMat3x2, DMat3x4, DMat4x2, DMat4x3
 };
 
 struct Uniform {
     std::string name;
     UniformType type = UniformType::Float;
-    // Matrices column-major, as glUniformMatrix*fv; integers as floats,
-    // exact up to 2^24 in magnitude (scene readers refuse larger ones).
-    std::array<float, 16> value{};
+    // Matrices column-major, as glUniformMatrix*fv; every value as a double,
+    // which holds each float, double, int32 and uint32 exactly (a float
+    // uniform's value is a float's, rounded once where it was set).
+    std::array<double, 16> value{};
 };
+
+// Whether a uniform of type t holds integers (int, uint, bool and their
+// vectors), which glUniform*i and *ui set.
+inline bool uniform_type_is_integer(UniformType t) {
+    switch (t) {
+        case UniformType::Int: case UniformType::IVec2: case UniformType::IVec3: case UniformType::IVec4:
+        case UniformType::UInt: case UniformType::UVec2: case UniformType::UVec3: case UniformType::UVec4:
+            return true;
+        default:
+            return false;
+    }
+}
 
 // Storage formats. Texels are given to both backends as RGBA8 bytes or as
 // RGBA floats whatever the format; R32F keeps red, RGBA16F stores halves,

@@ -37,6 +37,9 @@ namespace st {
     X(Uniform2i) X(Uniform3i) X(Uniform4i) X(Uniform1ui) X(Uniform2ui) X(Uniform3ui) X(Uniform4ui)          \
     X(UniformMatrix2fv) X(UniformMatrix3fv) X(UniformMatrix2x3fv) X(UniformMatrix2x4fv) X(UniformMatrix3x2fv)  \
     X(UniformMatrix3x4fv) X(UniformMatrix4x2fv) X(UniformMatrix4x3fv)                                        \
+    X(Uniform1d) X(Uniform2d) X(Uniform3d) X(Uniform4d) X(UniformMatrix2dv) X(UniformMatrix3dv)              \
+    X(UniformMatrix4dv) X(UniformMatrix2x3dv) X(UniformMatrix2x4dv) X(UniformMatrix3x2dv)                  \
+    X(UniformMatrix3x4dv) X(UniformMatrix4x2dv) X(UniformMatrix4x3dv)                                        \
     X(GetActiveUniformBlockiv) X(GetActiveUniformsiv) X(GetActiveUniformName) X(UniformBlockBinding)         \
     X(BindBufferBase)                                                                                       \
     X(VertexAttribPointer) X(Viewport)

@@ -195,29 +195,52 @@ void upload_texture(const GlApi& gl, const Texture& tex) {
 void set_uniform(const GlApi& gl, GLuint program, const Uniform& u) {
     const GLint loc = gl.GetUniformLocation(program, u.name.c_str());
     if (loc < 0) return;  // not used by this program (or optimised away)
-    const float* v = u.value.data();
+    const double* d = u.value.data();
+    // The values as glUniform*f, *i and *ui take them (each exact: a float
+    // uniform holds a float's value, an integer one an integer's).
+    std::array<float, 16> v{};
+    std::array<GLint, 4> i{};
+    std::array<GLuint, 4> ui{};
+    for (size_t k = 0; k < v.size(); ++k) v[k] = float(d[k]);
+    for (size_t k = 0; k < i.size(); ++k) {
+        i[k] = uniform_type_is_integer(u.type) ? GLint(d[k]) : 0;
+        ui[k] = uniform_type_is_integer(u.type) ? GLuint(d[k]) : 0u;
+    }
     switch (u.type) {
         case UniformType::Float: gl.Uniform1f(loc, v[0]); break;
         case UniformType::Vec2: gl.Uniform2f(loc, v[0], v[1]); break;
         case UniformType::Vec3: gl.Uniform3f(loc, v[0], v[1], v[2]); break;
         case UniformType::Vec4: gl.Uniform4f(loc, v[0], v[1], v[2], v[3]); break;
-        case UniformType::Int: gl.Uniform1i(loc, int(v[0])); break;
-        case UniformType::Mat4: gl.UniformMatrix4fv(loc, 1, GL_FALSE, v); break;
-        case UniformType::IVec2: gl.Uniform2i(loc, int(v[0]), int(v[1])); break;
-        case UniformType::IVec3: gl.Uniform3i(loc, int(v[0]), int(v[1]), int(v[2])); break;
-        case UniformType::IVec4: gl.Uniform4i(loc, int(v[0]), int(v[1]), int(v[2]), int(v[3])); break;
-        case UniformType::UInt: gl.Uniform1ui(loc, GLuint(v[0])); break;
-        case UniformType::UVec2: gl.Uniform2ui(loc, GLuint(v[0]), GLuint(v[1])); break;
-        case UniformType::UVec3: gl.Uniform3ui(loc, GLuint(v[0]), GLuint(v[1]), GLuint(v[2])); break;
-        case UniformType::UVec4: gl.Uniform4ui(loc, GLuint(v[0]), GLuint(v[1]), GLuint(v[2]), GLuint(v[3])); break;
-        case UniformType::Mat2: gl.UniformMatrix2fv(loc, 1, GL_FALSE, v); break;
-        case UniformType::Mat3: gl.UniformMatrix3fv(loc, 1, GL_FALSE, v); break;
-        case UniformType::Mat2x3: gl.UniformMatrix2x3fv(loc, 1, GL_FALSE, v); break;
-        case UniformType::Mat2x4: gl.UniformMatrix2x4fv(loc, 1, GL_FALSE, v); break;
-        case UniformType::Mat3x2: gl.UniformMatrix3x2fv(loc, 1, GL_FALSE, v); break;
-        case UniformType::Mat3x4: gl.UniformMatrix3x4fv(loc, 1, GL_FALSE, v); break;
-        case UniformType::Mat4x2: gl.UniformMatrix4x2fv(loc, 1, GL_FALSE, v); break;
-        case UniformType::Mat4x3: gl.UniformMatrix4x3fv(loc, 1, GL_FALSE, v); break;
+        case UniformType::Int: gl.Uniform1i(loc, i[0]); break;
+        case UniformType::Mat4: gl.UniformMatrix4fv(loc, 1, GL_FALSE, v.data()); break;
+        case UniformType::IVec2: gl.Uniform2i(loc, i[0], i[1]); break;
+        case UniformType::IVec3: gl.Uniform3i(loc, i[0], i[1], i[2]); break;
+        case UniformType::IVec4: gl.Uniform4i(loc, i[0], i[1], i[2], i[3]); break;
+        case UniformType::UInt: gl.Uniform1ui(loc, ui[0]); break;
+        case UniformType::UVec2: gl.Uniform2ui(loc, ui[0], ui[1]); break;
+        case UniformType::UVec3: gl.Uniform3ui(loc, ui[0], ui[1], ui[2]); break;
+        case UniformType::UVec4: gl.Uniform4ui(loc, ui[0], ui[1], ui[2], ui[3]); break;
+        case UniformType::Mat2: gl.UniformMatrix2fv(loc, 1, GL_FALSE, v.data()); break;
+        case UniformType::Mat3: gl.UniformMatrix3fv(loc, 1, GL_FALSE, v.data()); break;
+        case UniformType::Mat2x3: gl.UniformMatrix2x3fv(loc, 1, GL_FALSE, v.data()); break;
+        case UniformType::Mat2x4: gl.UniformMatrix2x4fv(loc, 1, GL_FALSE, v.data()); break;
+        case UniformType::Mat3x2: gl.UniformMatrix3x2fv(loc, 1, GL_FALSE, v.data()); break;
+        case UniformType::Mat3x4: gl.UniformMatrix3x4fv(loc, 1, GL_FALSE, v.data()); break;
+        case UniformType::Mat4x2: gl.UniformMatrix4x2fv(loc, 1, GL_FALSE, v.data()); break;
+        case UniformType::Mat4x3: gl.UniformMatrix4x3fv(loc, 1, GL_FALSE, v.data()); break;
+        case UniformType::Double: gl.Uniform1d(loc, d[0]); break;
+        case UniformType::DVec2: gl.Uniform2d(loc, d[0], d[1]); break;
+        case UniformType::DVec3: gl.Uniform3d(loc, d[0], d[1], d[2]); break;
+        case UniformType::DVec4: gl.Uniform4d(loc, d[0], d[1], d[2], d[3]); break;
+        case UniformType::DMat2: gl.UniformMatrix2dv(loc, 1, GL_FALSE, d); break;
+        case UniformType::DMat3: gl.UniformMatrix3dv(loc, 1, GL_FALSE, d); break;
+        case UniformType::DMat4: gl.UniformMatrix4dv(loc, 1, GL_FALSE, d); break;
+        case UniformType::DMat2x3: gl.UniformMatrix2x3dv(loc, 1, GL_FALSE, d); break;
+        case UniformType::DMat2x4: gl.UniformMatrix2x4dv(loc, 1, GL_FALSE, d); break;
+        case UniformType::DMat3x2: gl.UniformMatrix3x2dv(loc, 1, GL_FALSE, d); break;
+        case UniformType::DMat3x4: gl.UniformMatrix3x4dv(loc, 1, GL_FALSE, d); break;
+        case UniformType::DMat4x2: gl.UniformMatrix4x2dv(loc, 1, GL_FALSE, d); break;
+        case UniformType::DMat4x3: gl.UniformMatrix4x3dv(loc, 1, GL_FALSE, d); break;
     }
 }
 

@@ -9,10 +9,11 @@ namespace st {
 namespace {
 
 // Columns and rows of a matrix type (0 for others), and whether its values
-// are integers (written as int32 or uint32, as std140 holds bool too).
+// are integers (written as int32 or uint32, as std140 holds bool too) or
+// doubles (8 bytes each; GL's offsets and strides say where).
 struct Shape {
     int columns = 0, rows = 0, components = 1;
-    bool integer = false, is_unsigned = false;
+    bool integer = false, is_unsigned = false, is_double = false;
 };
 
 Shape shape_of(UniformType t) {
@@ -38,34 +39,55 @@ Shape shape_of(UniformType t) {
     case UniformType::Mat3x4: return {3, 4};
     case UniformType::Mat4x2: return {4, 2};
     case UniformType::Mat4x3: return {4, 3};
+    case UniformType::Double: return {0, 0, 1, false, false, true};
+    case UniformType::DVec2: return {0, 0, 2, false, false, true};
+    case UniformType::DVec3: return {0, 0, 3, false, false, true};
+    case UniformType::DVec4: return {0, 0, 4, false, false, true};
+    case UniformType::DMat2: return {2, 2, 1, false, false, true};
+    case UniformType::DMat3: return {3, 3, 1, false, false, true};
+    case UniformType::DMat4: return {4, 4, 1, false, false, true};
+    case UniformType::DMat2x3: return {2, 3, 1, false, false, true};
+    case UniformType::DMat2x4: return {2, 4, 1, false, false, true};
+    case UniformType::DMat3x2: return {3, 2, 1, false, false, true};
+    case UniformType::DMat3x4: return {3, 4, 1, false, false, true};
+    case UniformType::DMat4x2: return {4, 2, 1, false, false, true};
+    case UniformType::DMat4x3: return {4, 3, 1, false, false, true};
     }
     return {};
 }
 
-void put(std::vector<uint8_t>& bytes, GLint offset, const void* value) {
-    if (offset >= 0 && size_t(offset) + 4 <= bytes.size()) std::memcpy(&bytes[size_t(offset)], value, 4);
+void put(std::vector<uint8_t>& bytes, GLint offset, const void* value, size_t size) {
+    if (offset >= 0 && size_t(offset) + size <= bytes.size()) std::memcpy(&bytes[size_t(offset)], value, size);
+}
+
+// One value of `s` at `offset`: a double, a float, or an int32 or uint32
+// (each exact: the Uniform holds it exactly).
+void put_value(std::vector<uint8_t>& bytes, GLint offset, const Shape& s, double v) {
+    if (s.is_double) {
+        put(bytes, offset, &v, 8);
+    } else if (s.is_unsigned) {
+        const uint32_t x = uint32_t(v);
+        put(bytes, offset, &x, 4);
+    } else if (s.integer) {
+        const int32_t x = int32_t(v);
+        put(bytes, offset, &x, 4);
+    } else {
+        const float x = float(v);
+        put(bytes, offset, &x, 4);
+    }
 }
 
 // One uniform's value at `offset` (a matrix's columns `matrix_stride` apart).
 void write(std::vector<uint8_t>& bytes, const Uniform& u, GLint offset, GLint matrix_stride) {
     const Shape s = shape_of(u.type);
+    const int size = s.is_double ? 8 : 4;
     if (s.columns) {
         for (int c = 0; c < s.columns; ++c)
-            for (int r = 0; r < s.rows; ++r) put(bytes, offset + c * matrix_stride + r * 4, &u.value[size_t(c * s.rows + r)]);
+            for (int r = 0; r < s.rows; ++r)
+                put_value(bytes, offset + c * matrix_stride + r * size, s, u.value[size_t(c * s.rows + r)]);
         return;
     }
-    for (int i = 0; i < s.components; ++i) {
-        const float v = u.value[size_t(i)];  // integers exact as floats (uniform_fields.h)
-        if (s.is_unsigned) {
-            const uint32_t x = uint32_t(v);
-            put(bytes, offset + i * 4, &x);
-        } else if (s.integer) {
-            const int32_t x = int32_t(v);
-            put(bytes, offset + i * 4, &x);
-        } else {
-            put(bytes, offset + i * 4, &v);
-        }
-    }
+    for (int i = 0; i < s.components; ++i) put_value(bytes, offset + i * size, s, u.value[size_t(i)]);
 }
 
 const Uniform* named(const std::vector<Uniform>& uniforms, const std::string& name) {

@@ -47,6 +47,7 @@ void add_builtin_twins(TwinRegistry& r) {
     r.add_fragment("builtins_trigonometry", [] { return std::make_unique<BuiltinsTrigonometryFragment>(); });
     r.add_fragment("builtins_geometric", [] { return std::make_unique<BuiltinsGeometricFragment>(); });
     r.add_fragment("builtins_integer", [] { return std::make_unique<BuiltinsIntegerFragment>(); });
+    r.add_fragment("builtins_double", [] { return std::make_unique<BuiltinsDoubleFragment>(); });
     r.add_fragment("builtins_matrix", [] { return std::make_unique<BuiltinsMatrixFragment>(); });
     r.add_fragment("compiler_rewrites", [] { return std::make_unique<CompilerRewritesFragment>(); });
     r.add_fragment("vertex_result", [] { return std::make_unique<VertexResultFragment>(); });

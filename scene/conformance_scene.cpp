@@ -34,23 +34,29 @@ Uniform read_uniform(JsonReader& r) {
     u.name = r.text("name");
     int found = 0;
     const struct { const char* key; UniformType type; size_t n; } kinds[] = {
-        {"float", UniformType::Float, 1}, {"vec2", UniformType::Vec2, 2}, {"vec3", UniformType::Vec3, 3},
-        {"vec4", UniformType::Vec4, 4},   {"int", UniformType::Int, 1}};
+        {"float", UniformType::Float, 1},   {"vec2", UniformType::Vec2, 2},   {"vec3", UniformType::Vec3, 3},
+        {"vec4", UniformType::Vec4, 4},     {"int", UniformType::Int, 1},     {"double", UniformType::Double, 1},
+        {"dvec2", UniformType::DVec2, 2},   {"dvec3", UniformType::DVec3, 3}, {"dvec4", UniformType::DVec4, 4},
+        {"dmat2", UniformType::DMat2, 4},   {"dmat3", UniformType::DMat3, 9}, {"dmat4", UniformType::DMat4, 16}};
     for (const auto& k : kinds) {
         if (!r.has(k.key)) continue;
         ++found;
         u.type = k.type;
+        // A float's value is rounded to a float once, here; a double's and an int's are kept exactly.
+        const bool is_float = k.type == UniformType::Float || k.type == UniformType::Vec2 ||
+                              k.type == UniformType::Vec3 || k.type == UniformType::Vec4;
         if (k.type == UniformType::Int) {
-            u.value[0] = float(r.integer(k.key));  // exact as a float
+            u.value[0] = double(r.integer(k.key));
         } else if (k.n == 1) {
-            u.value[0] = float(r.number(k.key));
+            const double d = r.number(k.key);
+            u.value[0] = is_float ? double(float(d)) : d;
         } else {
             const auto v = r.numbers(k.key);
-            for (size_t i = 0; i < k.n; ++i) u.value[i] = float(v[i]);
+            for (size_t i = 0; i < k.n; ++i) u.value[i] = is_float ? double(float(v[i])) : v[i];
         }
     }
     if (found != 1)
-        throw InputError("field '" + r.path() + "' needs exactly one of float, vec2, vec3, vec4, int");
+        throw InputError("field '" + r.path() + "' needs exactly one of float, vec2, vec3, vec4, int, double, dvec2, dvec3, dvec4, dmat2, dmat3, dmat4");
     r.finish();
     return u;
 }

@@ -51,9 +51,22 @@ ParamSpace pass_fields() {
         .only_if_present();
     s.numbers("uniforms[].vec4", 4, 4, -kMaxAttribute, kMaxAttribute, nullptr, "a vec4's value").draws(-10, 10).edge({0, 1})
         .only_if_present();
-    s.integer("uniforms[].int", -(1 << 24), 1 << 24, nullptr, "an int's value (exact as a float)")
+    s.integer("uniforms[].int", INT32_MIN, INT32_MAX, nullptr, "an int's value")
         .draws(-100, 100).edge({0, 1, -1})
         .only_if_present();
+    s.number("uniforms[].double", -kMaxAttribute, kMaxAttribute, nullptr, "a double's value (glUniform1d)")
+        .draws(-10, 10).edge({0, 1, -1})
+        .only_if_present();
+    for (int n = 2; n <= 4; ++n)
+        s.numbers("uniforms[].dvec" + std::to_string(n), n, n, -kMaxAttribute, kMaxAttribute, nullptr,
+                  "a dvec" + std::to_string(n) + "'s value")
+            .draws(-10, 10).edge({0, 1})
+            .only_if_present();
+    for (int n = 2; n <= 4; ++n)
+        s.numbers("uniforms[].dmat" + std::to_string(n), n * n, n * n, -kMaxAttribute, kMaxAttribute, nullptr,
+                  "a dmat" + std::to_string(n) + "'s value, column-major (glUniformMatrix" + std::to_string(n) + "dv)")
+            .draws(-10, 10).edge({0, 1})
+            .only_if_present();
     s.object("textures", false, "procedural textures or render targets, bound to units in order", 0, 8);
     s.text("textures[].sampler", "required", "the GLSL sampler's name");
     s.include(pattern_texture_fields(true), "textures[]");

@@ -11,12 +11,11 @@ namespace st {
 namespace {
 
 constexpr double kMaxFloat = 1e6;
-constexpr double kMaxInteger = 16777216.0;  // 2^24: exact as the float a Uniform holds
 
 struct TypeInfo {
     UniformType type;
     int count;     // values
-    char element;  // 'f' float, 'i' int, 'u' uint, 'b' bool
+    char element;  // 'f' float, 'd' double, 'i' int, 'u' uint, 'b' bool
     int columns = 0, rows = 0;  // a matrix's, else 0
 };
 
@@ -36,6 +35,14 @@ bool type_info(const std::string& t, TypeInfo& info) {
         {"mat2x3", {UniformType::Mat2x3, 6, 'f', 2, 3}}, {"mat2x4", {UniformType::Mat2x4, 8, 'f', 2, 4}},
         {"mat3x2", {UniformType::Mat3x2, 6, 'f', 3, 2}}, {"mat3x4", {UniformType::Mat3x4, 12, 'f', 3, 4}},
         {"mat4x2", {UniformType::Mat4x2, 8, 'f', 4, 2}}, {"mat4x3", {UniformType::Mat4x3, 12, 'f', 4, 3}},
+        {"double", {UniformType::Double, 1, 'd', 0}},     {"dvec2", {UniformType::DVec2, 2, 'd', 0}},
+        {"dvec3", {UniformType::DVec3, 3, 'd', 0}},       {"dvec4", {UniformType::DVec4, 4, 'd', 0}},
+        {"dmat2", {UniformType::DMat2, 4, 'd', 2, 2}},    {"dmat3", {UniformType::DMat3, 9, 'd', 3, 3}},
+        {"dmat4", {UniformType::DMat4, 16, 'd', 4, 4}},   {"dmat2x2", {UniformType::DMat2, 4, 'd', 2, 2}},
+        {"dmat3x3", {UniformType::DMat3, 9, 'd', 3, 3}},  {"dmat4x4", {UniformType::DMat4, 16, 'd', 4, 4}},
+        {"dmat2x3", {UniformType::DMat2x3, 6, 'd', 2, 3}}, {"dmat2x4", {UniformType::DMat2x4, 8, 'd', 2, 4}},
+        {"dmat3x2", {UniformType::DMat3x2, 6, 'd', 3, 2}}, {"dmat3x4", {UniformType::DMat3x4, 12, 'd', 3, 4}},
+        {"dmat4x2", {UniformType::DMat4x2, 8, 'd', 4, 2}}, {"dmat4x3", {UniformType::DMat4x3, 12, 'd', 4, 3}},
     };
     for (const auto& e : table)
         if (t == e.name) {
@@ -66,16 +73,23 @@ Uniform value_of(const nlohmann::json& v, const TypeInfo& info, const std::strin
         }
         if (!x.is_number()) throw InputError("field '" + where + "' must be a number");
         const double d = x.get<double>();
+        if (info.element == 'd') {
+            if (!std::isfinite(d)) throw InputError("field '" + where + "' must be a finite number");
+            u.value[size_t(c)] = d;
+            continue;
+        }
         if (info.element == 'f') {
             if (!(std::abs(d) <= kMaxFloat)) throw InputError("field '" + where + "' must lie within +-1e6");
             u.value[size_t(c)] = float(d);
             continue;
         }
-        const double lo = info.element == 'u' ? 0.0 : -kMaxInteger;
-        if (!(d >= lo && d <= kMaxInteger) || d != std::floor(d))
-            throw InputError("field '" + where + "' must be a whole number in [" + (info.element == 'u' ? "0" : "-16777216") +
-                             ", 16777216]");
-        u.value[size_t(c)] = float(d);
+        // Every int32 or uint32 (the Uniform's double holds each exactly).
+        const bool is_unsigned = info.element == 'u';
+        const double lo = is_unsigned ? 0.0 : -2147483648.0, hi = is_unsigned ? 4294967295.0 : 2147483647.0;
+        if (!(d >= lo && d <= hi) || d != std::floor(d))
+            throw InputError("field '" + where + "' must be a whole number in [" +
+                             (is_unsigned ? "0, 4294967295]" : "-2147483648, 2147483647]"));
+        u.value[size_t(c)] = d;
     }
     return u;
 }

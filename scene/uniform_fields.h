@@ -2,14 +2,15 @@
 // scene kind that passes uniforms through from its file (the kind
 // `shadertwin new-technique` writes). One field per uniform, named as the
 // uniform, whose JSON follows the GLSL type:
-//   float, int, uint      a number (integers whole, within +-2^24, uint >= 0)
+//   float, double         a number
+//   int, uint             a whole number, an int32's or a uint32's
 //   bool                  true or false
-//   vecN, ivecN, uvecN    N numbers;  bvecN: N booleans
-//   matN, matCxR          N*N (C*R) numbers, column-major as
+//   vecN, dvecN, ivecN, uvecN  N numbers;  bvecN: N booleans
+//   matN, matCxR, dmatN, dmatCxR  N*N (C*R) numbers, column-major as
 //                         glUniformMatrix*fv takes them, or "identity"
 //   T name[K]             an array of K values of T, set as name[0] ...
 // Floats lie within +-1e6 (a radiance or a coordinate a scene needs; a
-// product of two then stays finite).
+// product of two then stays finite); doubles are taken as JSON gives them.
 #pragma once
 
 #include <string>
@@ -20,8 +21,8 @@
 
 namespace st {
 
-// Whether read_uniform_field reads `glsl_type` (not a sampler, struct or
-// double; those a kind reads itself).
+// Whether read_uniform_field reads `glsl_type` (not a sampler or a struct;
+// those a kind reads itself).
 bool is_uniform_field_type(const std::string& glsl_type);
 
 // Appends the uniform(s) the field `key` of `r` holds: one for a value,

@@ -23,10 +23,10 @@ inline Uniform uniform(const std::string& name, float v) {
     return u;
 }
 
-// An int (or a bool, which glUniform1i sets too), stored exactly as a float.
+// An int (or a bool, which glUniform1i sets too).
 inline Uniform int_uniform(const std::string& name, int v) {
     Uniform u{name, UniformType::Int, {}};
-    u.value[0] = float(v);
+    u.value[0] = v;
     return u;
 }
 
@@ -48,8 +48,7 @@ inline Uniform uniform(const std::string& name, const glm::vec4& v) {
     return u;
 }
 
-// ivecN, uvecN (and bvecN, set as ivecN): integers stored as floats, exact
-// up to 2^24 in magnitude.
+// ivecN, uvecN (and bvecN, set as ivecN).
 template <int N, class T, glm::qualifier Q>
 inline Uniform uniform(const std::string& name, const glm::vec<N, T, Q>& v)
     requires(std::is_integral_v<T> && N >= 2)
@@ -58,13 +57,44 @@ inline Uniform uniform(const std::string& name, const glm::vec<N, T, Q>& v)
     constexpr UniformType types[2][3] = {{UniformType::UVec2, UniformType::UVec3, UniformType::UVec4},
                                          {UniformType::IVec2, UniformType::IVec3, UniformType::IVec4}};
     Uniform u{name, types[is_signed][N - 2], {}};
-    for (int c = 0; c < N; ++c) u.value[size_t(c)] = float(v[c]);
+    for (int c = 0; c < N; ++c) u.value[size_t(c)] = double(v[c]);
     return u;
 }
 
 inline Uniform uint_uniform(const std::string& name, uint32_t v) {
     Uniform u{name, UniformType::UInt, {}};
-    u.value[0] = float(v);
+    u.value[0] = v;
+    return u;
+}
+
+// A double (GLSL double; named apart from uniform(name, float), which a
+// double argument such as 0.5 still reaches).
+inline Uniform double_uniform(const std::string& name, double v) {
+    Uniform u{name, UniformType::Double, {}};
+    u.value[0] = v;
+    return u;
+}
+
+// dvecN.
+template <int N, glm::qualifier Q>
+inline Uniform uniform(const std::string& name, const glm::vec<N, double, Q>& v)
+    requires(N >= 2)
+{
+    constexpr UniformType types[3] = {UniformType::DVec2, UniformType::DVec3, UniformType::DVec4};
+    Uniform u{name, types[N - 2], {}};
+    for (int c = 0; c < N; ++c) u.value[size_t(c)] = v[c];
+    return u;
+}
+
+// dmatCxR, column-major as glUniformMatrixCxRdv takes it.
+template <int C, int R, glm::qualifier Q>
+inline Uniform uniform(const std::string& name, const glm::mat<C, R, double, Q>& m) {
+    constexpr UniformType types[3][3] = {{UniformType::DMat2, UniformType::DMat2x3, UniformType::DMat2x4},
+                                         {UniformType::DMat3x2, UniformType::DMat3, UniformType::DMat3x4},
+                                         {UniformType::DMat4x2, UniformType::DMat4x3, UniformType::DMat4}};
+    Uniform u{name, types[C - 2][R - 2], {}};
+    for (int c = 0; c < C; ++c)
+        for (int r = 0; r < R; ++r) u.value[size_t(c * R + r)] = m[c][r];
     return u;
 }
 

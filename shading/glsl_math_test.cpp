@@ -392,6 +392,49 @@ TEST(GlslMath, MulOfGlmMatricesIsTheLaneOperators) {
     EXPECT_GT(glm_differs, 0) << "glm's v * m summed as GLSL does on every input: the order test proves nothing";
 }
 
+// Doubles: the lanes give the scalar bits, and the lowered forms answer as
+// llvmpipe measured (conformance-builtins-double-*): ceil and trunc of
+// (-1, 0) are +0.0, floor and ceil of infinity are infinity, round is to
+// even, mix is t * y + (1 - t) * x, and under the shading threads' DAZ min
+// and max return a denormal as 0.
+TEST(GlslMath, DoubleLanesGiveTheScalarBitsAndLlvmpipesLowering) {
+    ShadingFloatEnv daz;
+    const double inf = std::numeric_limits<double>::infinity();
+    const double xs[] = {0.0, -0.0, 0.5, -0.5, 1.5, 2.5, -2.5, 3.5, -1.0, 1e300, -1e-300, 4.9e-324, -4.9e-324,
+                         inf, -inf, std::nan(""), 4503599627370495.5, -4503599627370497.0, 0.49999999999999994};
+    const auto bits = [](double x) { return std::bit_cast<uint64_t>(x); };
+    for (double x : xs) {
+        const Double lx(x);
+        const double y = 0.75;
+        EXPECT_EQ(bits(glsl::floor(lx)[0]), bits(glsl::floor(x))) << x;
+        EXPECT_EQ(bits(glsl::ceil(lx)[0]), bits(glsl::ceil(x))) << x;
+        EXPECT_EQ(bits(glsl::trunc(lx)[0]), bits(glsl::trunc(x))) << x;
+        EXPECT_EQ(bits(glsl::roundEven(lx)[0]), bits(glsl::roundEven(x))) << x;
+        EXPECT_EQ(bits(glsl::fract(lx)[0]), bits(glsl::fract(x))) << x;
+        EXPECT_EQ(bits(glsl::sign(lx)[0]), bits(glsl::sign(x))) << x;
+        EXPECT_EQ(bits(glsl::mod(lx, Double(y))[0]), bits(glsl::mod(x, y))) << x;
+        EXPECT_EQ(bits(glsl::max(lx, Double(y))[0]), bits(glsl::max(x, y))) << x;
+        EXPECT_EQ(bits(glsl::min(lx, Double(-y))[0]), bits(glsl::min(x, -y))) << x;
+        EXPECT_EQ(bits(glsl::mix(lx, Double(y), Double(0.3))[0]), bits(glsl::mix(x, y, 0.3))) << x;
+        EXPECT_EQ(bits(glsl::inversesqrt(lx)[0]), bits(glsl::inversesqrt(x))) << x;
+        EXPECT_EQ(std::bit_cast<uint32_t>(to_float(lx)[0]), std::bit_cast<uint32_t>(float(x))) << x;
+    }
+    EXPECT_EQ(bits(glsl::ceil(-0.5)), bits(0.0));
+    EXPECT_EQ(bits(glsl::trunc(-0.5)), bits(0.0));
+    EXPECT_EQ(glsl::floor(-inf), -inf);
+    EXPECT_EQ(glsl::ceil(inf), inf);
+    EXPECT_EQ(glsl::round(2.5), 2.0);
+    EXPECT_EQ(glsl::round(-2.5), -2.0);
+    EXPECT_EQ(glsl::round(3.5), 4.0);
+    EXPECT_EQ(bits(glsl::sign(-0.0)), bits(0.0));
+    EXPECT_EQ(bits(glsl::max(4.9e-324, -1.0)), bits(0.0));  // DAZ: the denormal comes back as 0
+    const DVec3 a(Double(0.1), Double(-2.0), Double(3.0)), b(Double(7.0), Double(0.5), Double(-0.25));
+    const glm::dvec3 ga(0.1, -2.0, 3.0), gb(7.0, 0.5, -0.25);
+    EXPECT_EQ(bits(glsl::dot(a, b)[0]), bits(glsl::dot(ga, gb)));
+    EXPECT_EQ(bits(glsl::normalize(a).y[0]), bits(glsl::normalize(ga).y));
+    EXPECT_EQ(bits(glsl::dot(ga, gb)), bits((3.0 * -0.25 + -2.0 * 0.5) + 0.1 * 7.0));  // from the last term back
+}
+
 // gallivm's fmax/fmin (docs/llvmpipe/glsl-builtins.md 2.8): a tie gives the
 // second operand, one NaN the other operand. The twin gave -0.0 for
 // max(-0.0, 0.0) where llvmpipe gives +0.0 (explore profile --seed 2026).

@@ -20,7 +20,7 @@ const Uniform& find(const std::vector<Uniform>* uniforms, const std::string& nam
 }  // namespace
 
 float Bindings::get_float(const std::string& name) const {
-    return find(uniforms, name, UniformType::Float).value[0];
+    return float(find(uniforms, name, UniformType::Float).value[0]);
 }
 
 int Bindings::get_int(const std::string& name) const {
@@ -36,15 +36,16 @@ int Bindings::get_int_or(const std::string& name, int fallback) const {
 
 namespace {
 
-// A matCxR uniform as glm holds it: C columns of R rows, column-major.
-template <int C, int R> glm::mat<C, R, float> matrix_of(const Uniform& u) {
-    glm::mat<C, R, float> m;
+// A matCxR uniform as glm holds it: C columns of R rows, column-major, of
+// float or double T.
+template <int C, int R, class T = float> glm::mat<C, R, T> matrix_of(const Uniform& u) {
+    glm::mat<C, R, T> m;
     for (int c = 0; c < C; ++c)
-        for (int r = 0; r < R; ++r) m[c][r] = u.value[size_t(c * R + r)];
+        for (int r = 0; r < R; ++r) m[c][r] = T(u.value[size_t(c * R + r)]);
     return m;
 }
 
-// An N-vector uniform of element type T (integers are held exactly as floats).
+// An N-vector uniform of element type T (the Uniform holds each exactly).
 template <int N, class T> glm::vec<N, T> vector_of(const Uniform& u) {
     glm::vec<N, T> v;
     for (int i = 0; i < N; ++i) v[i] = T(u.value[size_t(i)]);
@@ -76,6 +77,20 @@ glm::mat3x2 Bindings::get_mat3x2(const std::string& name) const { return matrix_
 glm::mat3x4 Bindings::get_mat3x4(const std::string& name) const { return matrix_of<3, 4>(find(uniforms, name, UniformType::Mat3x4)); }
 glm::mat4x2 Bindings::get_mat4x2(const std::string& name) const { return matrix_of<4, 2>(find(uniforms, name, UniformType::Mat4x2)); }
 glm::mat4x3 Bindings::get_mat4x3(const std::string& name) const { return matrix_of<4, 3>(find(uniforms, name, UniformType::Mat4x3)); }
+
+double Bindings::get_double(const std::string& name) const { return find(uniforms, name, UniformType::Double).value[0]; }
+glm::dvec2 Bindings::get_dvec2(const std::string& name) const { return vector_of<2, double>(find(uniforms, name, UniformType::DVec2)); }
+glm::dvec3 Bindings::get_dvec3(const std::string& name) const { return vector_of<3, double>(find(uniforms, name, UniformType::DVec3)); }
+glm::dvec4 Bindings::get_dvec4(const std::string& name) const { return vector_of<4, double>(find(uniforms, name, UniformType::DVec4)); }
+glm::dmat2 Bindings::get_dmat2(const std::string& name) const { return matrix_of<2, 2, double>(find(uniforms, name, UniformType::DMat2)); }
+glm::dmat3 Bindings::get_dmat3(const std::string& name) const { return matrix_of<3, 3, double>(find(uniforms, name, UniformType::DMat3)); }
+glm::dmat4 Bindings::get_dmat4(const std::string& name) const { return matrix_of<4, 4, double>(find(uniforms, name, UniformType::DMat4)); }
+glm::dmat2x3 Bindings::get_dmat2x3(const std::string& name) const { return matrix_of<2, 3, double>(find(uniforms, name, UniformType::DMat2x3)); }
+glm::dmat2x4 Bindings::get_dmat2x4(const std::string& name) const { return matrix_of<2, 4, double>(find(uniforms, name, UniformType::DMat2x4)); }
+glm::dmat3x2 Bindings::get_dmat3x2(const std::string& name) const { return matrix_of<3, 2, double>(find(uniforms, name, UniformType::DMat3x2)); }
+glm::dmat3x4 Bindings::get_dmat3x4(const std::string& name) const { return matrix_of<3, 4, double>(find(uniforms, name, UniformType::DMat3x4)); }
+glm::dmat4x2 Bindings::get_dmat4x2(const std::string& name) const { return matrix_of<4, 2, double>(find(uniforms, name, UniformType::DMat4x2)); }
+glm::dmat4x3 Bindings::get_dmat4x3(const std::string& name) const { return matrix_of<4, 3, double>(find(uniforms, name, UniformType::DMat4x3)); }
 
 const Sampler2D& Bindings::sampler(const std::string& name) const {
     for (size_t i = 0; i < sampler_names.size(); ++i)

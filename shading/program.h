@@ -81,6 +81,21 @@ struct Bindings {
     glm::uvec2 get_uvec2(const std::string& name) const;
     glm::uvec3 get_uvec3(const std::string& name) const;
     glm::uvec4 get_uvec4(const std::string& name) const;
+    // double, dvecN, dmatN (glm's double types; a fragment twin broadcasts
+    // them to Double lanes, simd/lane_double.h).
+    double get_double(const std::string& name) const;
+    glm::dvec2 get_dvec2(const std::string& name) const;
+    glm::dvec3 get_dvec3(const std::string& name) const;
+    glm::dvec4 get_dvec4(const std::string& name) const;
+    glm::dmat2 get_dmat2(const std::string& name) const;
+    glm::dmat3 get_dmat3(const std::string& name) const;
+    glm::dmat4 get_dmat4(const std::string& name) const;
+    glm::dmat2x3 get_dmat2x3(const std::string& name) const;
+    glm::dmat2x4 get_dmat2x4(const std::string& name) const;
+    glm::dmat3x2 get_dmat3x2(const std::string& name) const;
+    glm::dmat3x4 get_dmat3x4(const std::string& name) const;
+    glm::dmat4x2 get_dmat4x2(const std::string& name) const;
+    glm::dmat4x3 get_dmat4x3(const std::string& name) const;
     const Sampler2D& sampler(const std::string& name) const;
     const SamplerCube& sampler_cube(const std::string& name) const;
 };

@@ -17,6 +17,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "simd/lane_double.h"
 #include "simd/lane_swizzle.h"
 #include "simd/lane_uint.h"
 #include "simd/lanes.h"
@@ -27,6 +28,7 @@ using simd::Float;
 using simd::Int;
 using simd::Mask;
 using simd::UInt;
+using simd::Double;
 using simd::kLanes;
 
 // GLSL's vecN (T = Float), ivecN (Int) and bvecN (Mask), N = 2, 3, 4, with
@@ -45,12 +47,14 @@ namespace lane_vec_detail {
 template <class To> struct Convert;
 template <> struct Convert<Float> {
     static ST_INLINE Float from(Float x) { return x; }
+    static ST_INLINE Float from(Double x) { return simd::to_float(x); }
     static ST_INLINE Float from(Int x) { return simd::to_float(x); }
     static ST_INLINE Float from(Mask m) { return simd::select(m, Float(1.0f), Float(0.0f)); }
     static ST_INLINE Float from(UInt x) { return simd::to_float(x); }
 };
 template <> struct Convert<Int> {
     static ST_INLINE Int from(Int x) { return x; }
+    static ST_INLINE Int from(Double x) { return simd::itrunc(x); }
     static ST_INLINE Int from(Float x) { return simd::itrunc(x); }
     static ST_INLINE Int from(Mask m) { return simd::select(m, Int(1), Int(0)); }
     static ST_INLINE Int from(UInt x) { return simd::int_bits(x); }
@@ -61,8 +65,19 @@ template <> struct Convert<UInt> {  // uint(i) keeps the bits; uint(f) truncates
     static ST_INLINE UInt from(Int x) { return UInt(x); }
     static ST_INLINE UInt from(Mask m) { return simd::select(m, UInt(1u), UInt(0u)); }
 };
+// double(x): exact from float, int and uint; 1.0 or 0.0 from bool.
+template <> struct Convert<Double> {
+    static ST_INLINE Double from(Double x) { return x; }
+    static ST_INLINE Double from(Float x) { return Double(x); }
+    static ST_INLINE Double from(Int x) { return simd::to_double(x); }
+    static ST_INLINE Double from(UInt x) {
+        return simd::to_double(Int(simd::IntV(x.u() >> 1))) * Double(2.0) + simd::to_double(Int(x.v & 1));
+    }
+    static ST_INLINE Double from(Mask m) { return simd::select(m, Double(1.0), Double(0.0)); }
+};
 template <> struct Convert<Mask> {
     static ST_INLINE Mask from(UInt x) { return x != UInt(0u); }
+    static ST_INLINE Mask from(Double x) { return x != Double(0.0); }
     static ST_INLINE Mask from(Mask m) { return m; }
     static ST_INLINE Mask from(Float x) { return x != Float(0.0f); }
     static ST_INLINE Mask from(Int x) { return x != Int(0); }
@@ -188,6 +203,7 @@ template <class T> ST_INLINE Float float_of(T v) { return lane_vec_detail::Conve
 template <class T> ST_INLINE Int int_of(T v) { return lane_vec_detail::Convert<Int>::from(v); }
 template <class T> ST_INLINE Mask bool_of(T v) { return lane_vec_detail::Convert<Mask>::from(v); }
 template <class T> ST_INLINE UInt uint_of(T v) { return lane_vec_detail::Convert<UInt>::from(v); }
+template <class T> ST_INLINE Double double_of(T v) { return lane_vec_detail::Convert<Double>::from(v); }
 
 using Vec2 = LaneVec<Float, 2>;
 using Vec3 = LaneVec<Float, 3>;
@@ -201,6 +217,9 @@ using BVec4 = LaneVec<Mask, 4>;
 using UVec2 = LaneVec<UInt, 2>;
 using UVec3 = LaneVec<UInt, 3>;
 using UVec4 = LaneVec<UInt, 4>;
+using DVec2 = LaneVec<Double, 2>;
+using DVec3 = LaneVec<Double, 3>;
+using DVec4 = LaneVec<Double, 4>;
 
 namespace lane_vec_detail {
 // LaneVec<R, N>(f(a[0], b[0]), ...) (or f(a[i])): built in place from its

@@ -110,8 +110,8 @@ void check_uniform_type(const GlslStage& s, const GlslVariable& u, std::set<std:
         }
         return;
     }
-    refuse(s, u.line, "uniform " + u.type + " " + u.name + ": shadertwin sets float, int, uint, bool, their vectors, "
-                      "mat2, mat3, mat4, sampler2D, samplerCube, and structs and arrays of them");
+    refuse(s, u.line, "uniform " + u.type + " " + u.name + ": shadertwin sets float, double, int, uint, bool, their "
+                      "vectors and matrices, sampler2D, samplerCube, and structs and arrays of them");
 }
 
 Interface interface_of(const GlslStage& vert, const GlslStage& frag) {
@@ -243,6 +243,11 @@ std::string member_type(const std::string& t) {
         {"mat2x2", "glm::mat2"},     {"mat3x3", "glm::mat3"},     {"mat4x4", "glm::mat4"},
         {"mat2x3", "glm::mat2x3"},   {"mat2x4", "glm::mat2x4"},   {"mat3x2", "glm::mat3x2"},
         {"mat3x4", "glm::mat3x4"},   {"mat4x2", "glm::mat4x2"},   {"mat4x3", "glm::mat4x3"},
+        {"double", "double"},        {"dvec2", "glm::dvec2"},     {"dvec3", "glm::dvec3"},     {"dvec4", "glm::dvec4"},
+        {"dmat2", "glm::dmat2"},     {"dmat3", "glm::dmat3"},     {"dmat4", "glm::dmat4"},
+        {"dmat2x2", "glm::dmat2"},   {"dmat3x3", "glm::dmat3"},   {"dmat4x4", "glm::dmat4"},
+        {"dmat2x3", "glm::dmat2x3"}, {"dmat2x4", "glm::dmat2x4"}, {"dmat3x2", "glm::dmat3x2"},
+        {"dmat3x4", "glm::dmat3x4"}, {"dmat4x2", "glm::dmat4x2"}, {"dmat4x3", "glm::dmat4x3"},
         {"sampler2D", "const st::Sampler2D*"}, {"samplerCube", "const st::SamplerCube*"}};
     const auto it = types.find(t);
     return it == types.end() ? t : it->second;  // a struct: its mirror
@@ -262,6 +267,7 @@ std::string getter(const std::string& t, const std::string& gl) {
     if (t == "samplerCube") return "&b.sampler_cube(" + gl + ")";
     if (t.rfind("bvec", 0) == 0) return "glm::" + t + "(b.get_i" + t.substr(1) + "(" + gl + "))";
     if (t == "mat2x2" || t == "mat3x3" || t == "mat4x4") return "b.get_" + t.substr(0, 4) + "(" + gl + ")";
+    if (t == "dmat2x2" || t == "dmat3x3" || t == "dmat4x4") return "b.get_" + t.substr(0, 5) + "(" + gl + ")";
     return "b.get_" + t + "(" + gl + ")";
 }
 
@@ -423,6 +429,9 @@ std::string fragment_file(const Names& n, const Interface& in, const GlslStage& 
         if (is_sampler(u.type)) o << "    //   texture(" << u.name << ", p)  ->  texture(*" << u.name << "_, p)\n";
         else if (components(u.type))
             o << "    //   " << u.name << at << "  ->  " << lane_type(components(u.type)) << "(" << u.name << "_" << at << ")\n";
+        else if (u.type == "double" || u.type.rfind("dvec", 0) == 0)
+            o << "    //   " << u.name << at << "  ->  " << (u.type == "double" ? "Double" : "DVec" + u.type.substr(4)) << "(" << u.name
+              << "_" << at << ") (Double lanes: simd/lane_double.h)\n";
         else o << "    //   " << u.name << at << "  ->  " << u.name << "_" << at << " (" << member_type(u.type) << "; Vec3(v) makes lanes of a glm::vec3 v)\n";
     }
     o << "    //   gl_FragCoord  ->  frag.frag_coord();  discard, loops, ifs that assign: frag.exec()\n"
@@ -543,8 +552,10 @@ nlohmann::ordered_json default_value(const Interface& in, const GlslVariable& u,
                {"format", "rgba8"},  {"mipmaps", "box"}, {"min_filter", "linear_mipmap_linear"}};
     } else if (u.type == "samplerCube") {
         one = {{"cube", true}, {"pattern", "noise"}, {"seed", ++seed}, {"width", 16}, {"height", 16}, {"format", "rgba8"}};
-    } else if (u.type.rfind("mat", 0) == 0) {
+    } else if (u.type.rfind("mat", 0) == 0 || u.type.rfind("dmat", 0) == 0) {
         one = "identity";
+    } else if (u.type == "double") {
+        one = 0.5;
     } else if (u.type == "bool") {
         one = false;
     } else if (u.type.rfind("bvec", 0) == 0) {

@@ -23,6 +23,9 @@
 //  21: mix(x, w, t) (the fast form), mix(1.0, w, u) (from one), mix(x, w, bvec), abs
 //  22: GLSL's * of glm matrices: mat3 * vec3, vec4 * mat4, mat2x3 * mat3x2, mat4x3 * vec4
 //      (summed in another order than glm's own), matrixCompMult, determinant (mat2), inverse (mat4)
+//  23: floor and ceil of a double        24: trunc and roundEven of a double
+//  25: mod(x, y) and max(x, y) of doubles, fract, sqrt (each double's 64 bits as two channels,
+//      25 picking by the index)
 // x takes both signs, every exponent (zeros, denormals, infinities and NaNs
 // among them) and eight mantissa patterns: 4096 cells on 64x64; y comes from
 // a table of edges, w and z from it with NaN's place taken by -2 (where two
@@ -193,6 +196,14 @@ void main() {
                  (index & 8) != 0 ? (m23 * m32)[k % 3][(k + 1) % 3] : (m43 * v4)[(k + 2) % 3],
                  (index & 16) != 0 ? matrixCompMult(m3, transpose(m3))[k % 3].y : determinant(mat2(a.xy, b.yz)),
                  inverse(m4)[k][(index >> 2) & 3]);
+    } else if (group >= 23 && group <= 25) {
+        // Doubles of every bit pattern (zeros, denormals, infinities, NaNs among them) from the hashes.
+        double dx = packDouble2x32(uvec2(ua, ub));
+        double dy = packDouble2x32(uvec2(ub, ua ^ 0x3FF00000u));
+        dvec2 d = group == 23 ? dvec2(floor(dx), ceil(dx))
+                : group == 24 ? dvec2(trunc(dx), roundEven(dx))
+                : (index & 2) != 0 ? dvec2(mod(dx, dy), max(dx, dy)) : dvec2(fract(dx), sqrt(dx));
+        r = vec4(uintBitsToFloat(unpackDouble2x32(d.x)), uintBitsToFloat(unpackDouble2x32(d.y)));
     } else {
         mat3 m = mat3(a, b, vec3(value(index, 6), value(index, 7), value(index, 8)));
         mat3 inv = inverse(m);

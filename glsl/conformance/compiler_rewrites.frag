@@ -29,6 +29,8 @@
 //  19: 1.0 / (1.0 / q)                   runs as q
 //  20: refract(i, n, 0.66)               runs with k = 1 - (0.66 * 0.66) (1 - d d),
 //                                        the constants' product folded
+//  21: float(int(x))                     runs as trunc(x): -0.0 for x in (-1, 0),
+//                                        x itself past int's range
 // Operands are finite values of many magnitudes from the pixel's index;
 // nothing is a constant but what the expression writes, so nothing else is
 // folded. The twin writes what llvmpipe runs; its uniform `twin_naive` (twin
@@ -96,6 +98,8 @@ void main() {
         frag_colour = vec4(1.0 / (1.0 / a), 0.0, 0.0, 0.0);
     else if (group == 20)
         frag_colour = vec4(refract(normalize(colour), normalize(diff), 0.66), 0.0);
+    else if (group == 21)
+        frag_colour = vec4(float(int(x)), float(int(a * 1e7)), float(int(t - 0.5)), 0.0);
     else {
         float s = 0.0;
         for (int i = 0; i < 8; ++i)

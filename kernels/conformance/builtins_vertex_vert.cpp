@@ -170,6 +170,17 @@ void BuiltinsVertex::run(const glm::vec4* attributes, VertexOut& out) const {
                       (index & 16) != 0 ? glm::matrixCompMult(m3, glm::transpose(m3))[k % 3].y
                                         : glsl::determinant(glm::mat2(glm::vec2(a.x, a.y), glm::vec2(b.y, b.z))),
                       glsl::inverse(m4)[k][(index >> 2) & 3]);
+    } else if (group_ >= 23 && group_ <= 25) {
+        // The scalar double forms (llvmpipe's lowering of each: glsl-builtins.md 8).
+        const double dx = glsl::packDouble2x32(glm::uvec2(ua, ub));
+        const double dy = glsl::packDouble2x32(glm::uvec2(ub, ua ^ 0x3FF00000u));
+        const glm::dvec2 d = group_ == 23 ? glm::dvec2(glsl::floor(dx), glsl::ceil(dx))
+                           : group_ == 24 ? glm::dvec2(glsl::trunc(dx), glsl::roundEven(dx))
+                           : (index & 2) != 0 ? glm::dvec2(glsl::mod(dx, dy), glsl::max(dx, dy))
+                                              : glm::dvec2(glsl::fract(dx), glsl::sqrt(dx));
+        const glm::uvec2 hx = glsl::unpackDouble2x32(d.x), hy = glsl::unpackDouble2x32(d.y);
+        r = glm::vec4(glsl::uintBitsToFloat(hx.x), glsl::uintBitsToFloat(hx.y), glsl::uintBitsToFloat(hy.x),
+                      glsl::uintBitsToFloat(hy.y));
     } else {
         const glm::mat3 m(a, b, glm::vec3(value(index, 6), value(index, 7), value(index, 8)));
         const glm::mat3 inv = glsl::inverse(m);

@@ -90,6 +90,9 @@ Vec4 CompilerRewritesFragment::main(const Fragment& frag) const {
         const Vec3 i = normalize(colour), n = normalize(diff);
         return Vec4(naive_ ? refract(i, n, Float(0.66f)) : refract_constant_eta(i, n, Float(0.66f)), zero);
     }
+    case 21:  // nir_opt_algebraic: ~i2f(f2i(a)) -> ftrunc(a), so -0.0 in (-1, 0) and no int range
+        if (naive_) return Vec4(float_of(int_of(x)), float_of(int_of(a * 1e7f)), float_of(int_of(t - 0.5f)), zero);
+        return Vec4(trunc(x), trunc(a * 1e7f), trunc(t - 0.5f), zero);
     default: {  // 16 and any other group, as the GLSL's last else: the loop unrolled (NIR), then
                 //  each sin and the sums folded
         float s = 0.0f;

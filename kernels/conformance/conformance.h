@@ -149,6 +149,20 @@ public:
     Vec4 main(const Fragment& frag) const;
 };
 
+class BuiltinsDoubleFragment final : public FragmentProgram<BuiltinsDoubleFragment> {  // builtins_double.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override { return 0; }
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    int group_ = 0;
+    double scale_ = 0.0;  // the double uniforms group 8 reads
+    glm::dvec3 offset_{};
+    glm::dmat3 basis_{};
+    glm::dvec4 corner_{};
+};
+
 class CompilerRewritesFragment final : public FragmentProgram<CompilerRewritesFragment> {  // compiler_rewrites.frag
 public:
     void bind(const Bindings& b) override;

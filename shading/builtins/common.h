@@ -17,6 +17,7 @@
 // - frexp and ldexp are integer code on the bits; a denormal counts as 0.
 #pragma once
 
+#include <bit>
 #include <limits>
 
 #include "shading/builtins/componentwise.h"
@@ -77,41 +78,110 @@ template <class F, class I> ST_INLINE F ldexp(F x, I e) {
 
 }  // namespace detail
 
+// genDType: double for vertex twins, Double lanes for fragment twins.
+// llvmpipe has no double rounding of its own (PIPE_SHADER_CAP_DROUND_
+// SUPPORTED is 0), so GLSL IR's lower_instructions (DOPS_TO_DFRAC) writes
+// ceil, trunc, round, roundEven and sign of doubles in fract(), floor,
+// comparisons and selects, each operation rounded once; fract(x) itself is
+// x - floor(x), floor the rounding instruction (DAZ: a denormal as +-0). dot
+// of dvecN becomes a chain of fma that lower_ffma64 splits, so it sums as
+// the float dot does; mix of doubles becomes t * y + (1 - t) * x
+// (double_lrp), not one of flrp's three forms. min and max are MINSD and
+// MAXSD with gallivm's NaN rule, which under DAZ return a denormal as +-0.
+namespace dbl {
+ST_INLINE double select(bool m, double a, double b) { return m ? a : b; }
+using simd::select;
+ST_INLINE double floor_instruction(double x) {
+    return simd::like_roundpd(x, [](double v) { return __builtin_floor(v); });
+}
+ST_INLINE Double floor_instruction(Double x) { return simd::floor_pd(x); }
+// ffract: lp_build_fract, x - floor(x).
+template <class D> ST_INLINE D fract(D x) { return x - floor_instruction(x); }
+// In each lowering below, NIR turns x - fract(x) back into the rounding
+// instruction's floor(x) (nir_opt_algebraic: a + -ffract(a) -> ffloor(a)),
+// so floor(inf) is inf, not inf - NaN.
+// dfloor_to_dfrac: x - fract(x), which is floor(x).
+template <class D> ST_INLINE D floor(D x) { return floor_instruction(x); }
+// dceil_to_dfrac: floor(x) + (fract(x) != 0 ? 1 : 0) (unordered: NaN counts).
+template <class D> ST_INLINE D ceil(D x) {
+    return floor_instruction(x) + select(fract(x) != D(0.0), D(1.0), D(0.0));
+}
+// dtrunc_to_dfrac: floor(x) for x >= 0, else floor(x) + (fract(x) == 0 ? 0 : 1).
+template <class D> ST_INLINE D trunc(D x) {
+    const D t = floor_instruction(x);
+    return select(x >= D(0.0), t, t + select(fract(x) == D(0.0), D(0.0), D(1.0)));
+}
+// dround_even_to_dfrac: t2 = floor(x + 0.5); where fract(x) is 0.5, t2 or
+// t2 - 1, whichever is even (fract(t2 * 0.5) == 0).
+template <class D> ST_INLINE D round_even(D x) {
+    const D t2 = floor_instruction(x + D(0.5));
+    const D even = select(fract(t2 * D(0.5)) == D(0.0), t2, t2 - D(1.0));
+    return select(fract(x) == D(0.5), even, t2);
+}
+// dsign_to_csel: x < 0 ? -1 : (x > 0 ? 1 : 0); NaN gives 0.
+template <class D> ST_INLINE D sign(D x) {
+    return select(x < D(0.0), D(-1.0), select(x > D(0.0), D(1.0), D(0.0)));
+}
+// gallivm's fmax and fmin: MAXSD/MINSD(p, q), or p where q is NaN.
+ST_INLINE double max(double p, double q) { return q != q ? p : simd::maxsd(p, q); }
+ST_INLINE double min(double p, double q) { return q != q ? p : simd::minsd(p, q); }
+ST_INLINE Double max(Double p, Double q) { return simd::select(q != q, p, simd::maxpd(p, q)); }
+ST_INLINE Double min(Double p, Double q) { return simd::select(q != q, p, simd::minpd(p, q)); }
+}  // namespace dbl
+
 // abs clears the sign bit (llvm.fabs): NaN keeps its payload.
 ST_INLINE float abs(float x) { return scalar::abs(x); }
 using simd::abs;  // Float: the same function, so a twin's unqualified call is not ambiguous
+ST_INLINE double abs(double x) { return std::fabs(x); }
 ST_GLSL_COMPONENTWISE_1(abs)
 
 ST_INLINE float sign(float x) { return detail::sign(x); }
 ST_INLINE Float sign(Float x) { return detail::sign(x); }
+ST_INLINE double sign(double x) { return dbl::sign(x); }
+ST_INLINE Double sign(Double x) { return dbl::sign(x); }
 ST_GLSL_COMPONENTWISE_1(sign)
 
 // floor, ceil, trunc: roundps, exact. round and roundEven are both
 // fround_even (roundps 0): ties go to even, round(0.5) is 0.
 ST_INLINE float floor(float x) { return scalar::floor(x); }
 using simd::floor;  // Float: the same function, so a twin's unqualified call is not ambiguous
+ST_INLINE double floor(double x) { return dbl::floor(x); }
+ST_INLINE Double floor(Double x) { return dbl::floor(x); }
 ST_GLSL_COMPONENTWISE_1(floor)
 ST_INLINE float ceil(float x) { return scalar::ceil(x); }
 using simd::ceil;  // Float: the same function, so a twin's unqualified call is not ambiguous
+ST_INLINE double ceil(double x) { return dbl::ceil(x); }
+ST_INLINE Double ceil(Double x) { return dbl::ceil(x); }
 ST_GLSL_COMPONENTWISE_1(ceil)
 ST_INLINE float trunc(float x) { return scalar::trunc(x); }
 using simd::trunc;  // Float: the same function, so a twin's unqualified call is not ambiguous
+ST_INLINE double trunc(double x) { return dbl::trunc(x); }
+ST_INLINE Double trunc(Double x) { return dbl::trunc(x); }
 ST_GLSL_COMPONENTWISE_1(trunc)
 ST_INLINE float roundEven(float x) { return scalar::round_even(x); }
 ST_INLINE Float roundEven(Float x) { return lanes::round_even(x); }
+ST_INLINE double roundEven(double x) { return dbl::round_even(x); }
+ST_INLINE Double roundEven(Double x) { return dbl::round_even(x); }
 ST_GLSL_COMPONENTWISE_1(roundEven)
 ST_INLINE float round(float x) { return scalar::round_even(x); }
 ST_INLINE Float round(Float x) { return lanes::round_even(x); }
+ST_INLINE double round(double x) { return dbl::round_even(x); }
+ST_INLINE Double round(Double x) { return dbl::round_even(x); }
 ST_GLSL_COMPONENTWISE_1(round)
 
 // fract(x) = x - floor(x), one subtraction: 1.0 for tiny negative x, NaN
 // for infinities (not lp_build_fract_safe's clamp below 1).
 ST_INLINE float fract(float x) { return x - scalar::floor(x); }
 ST_INLINE Float fract(Float x) { return x - lanes::floor(x); }
+ST_INLINE double fract(double x) { return dbl::fract(x); }
+ST_INLINE Double fract(Double x) { return dbl::fract(x); }
 ST_GLSL_COMPONENTWISE_1(fract)
 
 ST_INLINE float mod(float x, float y) { return detail::mod(x, y); }
 ST_INLINE Float mod(Float x, Float y) { return detail::mod(x, y); }
+// mod of doubles: NIR's lower_fmod, with the rounding instruction's floor.
+ST_INLINE double mod(double x, double y) { return x - y * dbl::floor_instruction(x / y); }
+ST_INLINE Double mod(Double x, Double y) { return x - y * dbl::floor_instruction(x / y); }
 ST_GLSL_COMPONENTWISE_2(mod)
 
 // modf(x, i): i = trunc(x), returns x - i, so modf(-3.0) is +0.0.
@@ -130,15 +200,21 @@ template <int N> ST_INLINE LaneVec<Float, N> modf(const LaneVec<Float, N>& x, La
 
 ST_INLINE float max(float p, float q) { return scalar::max(p, q); }
 ST_INLINE Float max(Float p, Float q) { return lanes::max(p, q); }
+ST_INLINE double max(double p, double q) { return dbl::max(p, q); }
+ST_INLINE Double max(Double p, Double q) { return dbl::max(p, q); }
 ST_GLSL_COMPONENTWISE_2(max)
 ST_INLINE float min(float p, float q) { return scalar::min(p, q); }
 ST_INLINE Float min(Float p, Float q) { return lanes::min(p, q); }
+ST_INLINE double min(double p, double q) { return dbl::min(p, q); }
+ST_INLINE Double min(Double p, Double q) { return dbl::min(p, q); }
 ST_GLSL_COMPONENTWISE_2(min)
 
 // min(max(x, lo), hi): NaN x gives lo (then hi if lo > hi), and
 // clamp(-0.0, 0.0, 1.0) is +0.0.
 ST_INLINE float clamp(float x, float lo, float hi) { return scalar::min(scalar::max(x, lo), hi); }
 ST_INLINE Float clamp(Float x, Float lo, Float hi) { return lanes::min(lanes::max(x, lo), hi); }
+ST_INLINE double clamp(double x, double lo, double hi) { return dbl::min(dbl::max(x, lo), hi); }
+ST_INLINE Double clamp(Double x, Double lo, Double hi) { return dbl::min(dbl::max(x, lo), hi); }
 ST_GLSL_COMPONENTWISE_3(clamp)
 
 // mix(x, y, t) for float t is NIR's flrp, which nir_lower_flrp writes in
@@ -156,6 +232,9 @@ ST_GLSL_COMPONENTWISE_3(clamp)
 // a constant 0 (y * t, x * (1 - t)).
 ST_INLINE float mix(float x, float y, float t) { return x + t * (y - x); }
 ST_INLINE Float mix(Float x, Float y, Float t) { return x + t * (y - x); }
+// mix of doubles: double_lrp's t * y + (1 - t) * x, whatever the operands.
+ST_INLINE double mix(double x, double y, double t) { return t * y + (1.0 - t) * x; }
+ST_INLINE Double mix(Double x, Double y, Double t) { return t * y + (Double(1.0) - t) * x; }
 ST_GLSL_COMPONENTWISE_3(mix)
 ST_INLINE float mix_strict(float x, float y, float t) { return x * (1.0f - t) + y * t; }
 ST_INLINE Float mix_strict(Float x, Float y, Float t) { return x * (Float(1.0f) - t) + y * t; }
@@ -179,18 +258,31 @@ template <int N> ST_INLINE LaneVec<Float, N> mix(const LaneVec<Float, N>& x, con
 // step(edge, x): 1.0 where x >= edge (ordered: NaN in either gives 0.0).
 ST_INLINE float step(float edge, float x) { return x >= edge ? 1.0f : 0.0f; }
 ST_INLINE Float step(Float edge, Float x) { return lanes::select(x >= edge, Float(1.0f), Float(0.0f)); }
+ST_INLINE double step(double edge, double x) { return x >= edge ? 1.0 : 0.0; }
+ST_INLINE Double step(Double edge, Double x) { return simd::select(x >= edge, Double(1.0), Double(0.0)); }
 ST_GLSL_COMPONENTWISE_2(step)
 
 ST_INLINE float smoothstep(float e0, float e1, float x) { return detail::smoothstep(e0, e1, x); }
 ST_INLINE Float smoothstep(Float e0, Float e1, Float x) { return detail::smoothstep(e0, e1, x); }
+ST_INLINE double smoothstep(double e0, double e1, double x) {
+    const double t = dbl::min(dbl::max((x - e0) / (e1 - e0), 0.0), 1.0);
+    return t * (t * (3.0 - 2.0 * t));
+}
+ST_INLINE Double smoothstep(Double e0, Double e1, Double x) {
+    const Double t = dbl::min(dbl::max((x - e0) / (e1 - e0), Double(0.0)), Double(1.0));
+    return t * (t * (Double(3.0) - Double(2.0) * t));
+}
 ST_GLSL_COMPONENTWISE_3(smoothstep)
 
 // isnan(x) is x != x; isinf(x) is abs(x) == inf (ordered).
 ST_INLINE bool isnan(float x) { return x != x; }
 using simd::isnan;  // Float: x != x
+ST_INLINE bool isnan(double x) { return x != x; }
 ST_GLSL_COMPONENTWISE_1(isnan)
 ST_INLINE bool isinf(float x) { return scalar::abs(x) == std::numeric_limits<float>::infinity(); }
 ST_INLINE Mask isinf(Float x) { return lanes::abs(x) == Float(std::numeric_limits<float>::infinity()); }
+ST_INLINE bool isinf(double x) { return std::fabs(x) == std::numeric_limits<double>::infinity(); }
+ST_INLINE Mask isinf(Double x) { return simd::abs(x) == Double(std::numeric_limits<double>::infinity()); }
 ST_GLSL_COMPONENTWISE_1(isinf)
 
 // The bit casts move bits and nothing else: a signalling NaN or a denormal

@@ -1,7 +1,8 @@
 // componentwise.h: GLSL's vector forms of the componentwise built-ins,
 // written once. A built-in defined for float and Float gets, from one macro
 // line, its vecN forms for fragment twins (LaneVec<Float, N>) and vertex
-// twins (glm::vec<N, float>): each component computed alone, as NIR's
+// twins (glm::vec<N, float>), and its dvecN forms where it has double ones
+// (LaneVec<Double, N>, glm::dvecN): each component computed alone, as NIR's
 // lower_alu_to_scalar splits it. The forms GLSL has with a scalar among
 // vectors (mod(vec3, float), clamp(vec3, float, float), mix(vec3, vec3,
 // float), step(float, vec3), ...) take that scalar as every component.
@@ -19,6 +20,18 @@ template <int N> struct Traits<LaneVec<Float, N>> {
     static constexpr int size = N;
     template <class R> using With = LaneVec<R, N>;
     template <int I> static ST_INLINE const Float& get(const LaneVec<Float, N>& v) { return v.template component<I>(); }
+};
+template <int N> struct Traits<LaneVec<Double, N>> {
+    using Scalar = Double;
+    static constexpr int size = N;
+    template <class R> using With = LaneVec<R, N>;
+    template <int I> static ST_INLINE const Double& get(const LaneVec<Double, N>& v) { return v.template component<I>(); }
+};
+template <int N, glm::qualifier Q> struct Traits<glm::vec<N, double, Q>> {
+    using Scalar = double;
+    static constexpr int size = N;
+    template <class R> using With = glm::vec<N, R, Q>;
+    template <int I> static ST_INLINE const double& get(const glm::vec<N, double, Q>& v) { return v[I]; }
 };
 template <int N, glm::qualifier Q> struct Traits<glm::vec<N, float, Q>> {
     using Scalar = float;

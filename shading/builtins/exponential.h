@@ -121,8 +121,11 @@ ST_INLINE float pow(float x, float y) { return detail::pow(x, y); }
 ST_INLINE Float pow(Float x, Float y) { return detail::pow(x, y); }
 
 ST_INLINE float sqrt(float x) { return std::sqrt(x); }  // sqrtps: correctly rounded
+ST_INLINE double sqrt(double x) { return std::sqrt(x); }  // sqrtpd: correctly rounded
 using simd::sqrt;
 ST_INLINE float inversesqrt(float x) { return 1.0f / std::sqrt(x); }
+ST_INLINE double inversesqrt(double x) { return 1.0 / std::sqrt(x); }
+ST_INLINE Double inversesqrt(Double x) { return Double(1.0) / simd::sqrt(x); }
 ST_INLINE Float inversesqrt(Float x) { return Float(1.0f) / simd::sqrt(x); }
 
 }  // namespace st::glsl

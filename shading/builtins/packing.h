@@ -148,4 +148,24 @@ ST_GLSL_UNPACK_LANES(unpackHalf2x16, Vec2)
 #undef ST_GLSL_PACK_LANES
 #undef ST_GLSL_UNPACK_LANES
 
+// packDouble2x32(uvec2(lo, hi)) and unpackDouble2x32(d): the 64 bits moved,
+// nothing rounded (a bit cast in llvmpipe).
+ST_INLINE double packDouble2x32(const glm::uvec2& v) {
+    return std::bit_cast<double>((uint64_t(v.y) << 32) | uint64_t(v.x));
+}
+ST_INLINE glm::uvec2 unpackDouble2x32(double d) {
+    const uint64_t b = std::bit_cast<uint64_t>(d);
+    return glm::uvec2(uint32_t(b), uint32_t(b >> 32));
+}
+ST_INLINE Double packDouble2x32(const UVec2& v) {
+    const simd::ULongV lo = __builtin_convertvector(v.x.u(), simd::ULongV);
+    const simd::ULongV hi = __builtin_convertvector(v.y.u(), simd::ULongV);
+    return simd::double_from_bits(simd::LongV((hi << 32) | lo));
+}
+ST_INLINE UVec2 unpackDouble2x32(Double d) {
+    const simd::ULongV b = simd::ULongV(simd::bits_of(d));
+    return UVec2(UInt(simd::IntV(__builtin_convertvector(b, simd::UIntV))),
+                 UInt(simd::IntV(__builtin_convertvector(b >> 32, simd::UIntV))));
+}
+
 }  // namespace st::glsl

@@ -1,0 +1,108 @@
+// builtins_double_frag.cpp: twin of glsl/conformance/builtins_double.frag,
+// line for line, in Double lanes (simd/lane_double.h).
+#include "kernels/conformance/conformance.h"
+
+#include "kernels/conformance/builtin_inputs.h"
+
+namespace st {
+
+namespace {
+constexpr int32_t kExponents[64] = {0,    1,    2,    50,   400,  800,  872,  873,  874,  896,  897,  898,  920,
+                                    960,  990,  1000, 1010, 1015, 1018, 1019, 1020, 1021, 1022, 1023, 1024, 1025,
+                                    1026, 1027, 1028, 1029, 1030, 1031, 1033, 1036, 1040, 1045, 1050, 1053, 1054,
+                                    1055, 1056, 1060, 1070, 1074, 1075, 1076, 1077, 1080, 1100, 1126, 1150, 1151,
+                                    1152, 1170, 1300, 1600, 1900, 2000, 2030, 2040, 2044, 2045, 2046, 2047};
+constexpr uint32_t kMantissasHi[8] = {0u, 0u, 0x80000u, 0xFFFFFu, 0x55555u, 0u, 0x12345u, 0xFFFFFu};
+constexpr uint32_t kMantissasLo[8] = {0u, 1u, 0u, 0xFFFFFFFFu, 0x55555555u, 0x10000000u, 0x6789ABCDu, 0xF0000000u};
+constexpr uint32_t kEdgesHi[16] = {0x0u,        0x80000000u, 0x3FF00000u, 0xBFF00000u, 0x3FE00000u, 0x40040000u,
+                                   0xC00E0000u, 0x01A56E1Fu, 0xFE37E43Cu, 0x46293E59u, 0x7FF00000u, 0xFFF00000u,
+                                   0xC0000000u, 0x8u,        0x3FB99999u, 0x401C0000u};
+constexpr uint32_t kEdgesLo[16] = {0u, 0u, 0u, 0u, 0u, 0u, 0u, 0xC2F8F359u, 0x8800759Cu, 0x39A08CEAu, 0u, 0u, 0u, 0u,
+                                   0x9999999Au, 0u};
+constexpr uint32_t kWeightsHi[16] = {0x0u,        0x3FF00000u, 0x3FE00000u, 0x3FD00000u, 0x3FB99999u, 0x3FECCCCCu,
+                                     0x3E45798Eu, 0x3FEFFFFFu, 0xBFE00000u, 0x3FF80000u, 0x80000000u, 0x40000000u,
+                                     0xC0000000u, 0x7FF00000u, 0x3FD33333u, 0x3FE66666u};
+constexpr uint32_t kWeightsLo[16] = {0u, 0u, 0u, 0u, 0x9999999Au, 0xCCCCCCCDu, 0xE2308C3Au, 0xFFFFFFFFu,
+                                     0u, 0u, 0u, 0u, 0u,          0u,          0x33333333u, 0x66666666u};
+
+// table[k] per lane (the GLSL's constant-array index; k is masked in range).
+template <size_t N> UInt element(const uint32_t (&table)[N], Int k) {
+    UInt r;
+    for (int l = 0; l < kLanes; ++l) r.set(l, table[size_t(k[l]) % N]);
+    return r;
+}
+
+Double edge(Int k) { return glsl::packDouble2x32(UVec2(element(kEdgesLo, k), element(kEdgesHi, k))); }
+
+Double value(Int index, int k) {
+    const Int h = (index * Int(2 * k + 37) + Int(k * 101)) & 1023;
+    const Int e = ((index >> (k & 7)) + Int(k)) & 15;
+    return double_of(h - Int(512)) * Double(glsl::intBitsToFloat((e + Int(121)) << 23)) / Double(73.0);
+}
+
+// The GLSL's a ? b : c chains: every side computed, one kept per lane.
+Double pick(Int which, Double r0, Double r1, Double r2, Double r3) {
+    return select(which == Int(0), r0, select(which == Int(1), r1, select(which == Int(2), r2, r3)));
+}
+}  // namespace
+
+void BuiltinsDoubleFragment::bind(const Bindings& b) {
+    group_ = b.get_int("group");
+    if (group_ != 8) return;  // only group 8 reads them (the other scenes leave them unset, as GL's 0)
+    scale_ = b.get_double("scale");
+    offset_ = b.get_dvec3("offset");
+    basis_ = b.get_dmat3("basis");
+    corner_ = b.get_dvec4("corner");
+}
+
+Vec4 BuiltinsDoubleFragment::main(const Fragment& frag) const {
+    using namespace glsl;
+    const Int index = builtin_inputs::pixel_index(frag);
+    const Int i = index & 1023;
+    const Int which = index >> 10;
+    const UInt hi = (UInt(i & 1) << 31) | (UInt(glsl::element(kExponents, (i >> 1) & 63)) << 20) |
+                    element(kMantissasHi, (i >> 7) & 7);
+    const Double x = packDouble2x32(UVec2(element(kMantissasLo, (i >> 7) & 7), hi));
+    const Double y = edge((i ^ (i >> 4) ^ (i >> 8)) & 15);
+    const Double z = edge(((i >> 2) ^ (i >> 7) ^ 5) & 15);
+    const Int k = (i ^ (i >> 5)) & 15;
+    const Double t = packDouble2x32(UVec2(element(kWeightsLo, k), element(kWeightsHi, k)));
+    const Double lo = min(y, z), hi_edge = max(y, z);
+    Double r;
+    if (group_ == 0) {
+        r = pick(which, abs(x), sign(x), floor(x), ceil(x));
+    } else if (group_ == 1) {
+        r = pick(which, trunc(x), round(x), roundEven(x), fract(x));
+    } else if (group_ == 2) {
+        r = pick(which, sqrt(x), inversesqrt(x), min(x, y), max(x, y));
+    } else if (group_ == 3) {
+        r = pick(which, mod(x, y), clamp(x, lo, hi_edge), step(y, x), smoothstep(lo, hi_edge, x));
+    } else if (group_ == 4) {
+        // Double mix has one form whatever its operands, t * y + (1 - t) * x (glsl-builtins.md 8).
+        r = pick(which, mix(x, y, t), mix(x, z, Double(0.3)), mix(Double(1.0), y, t), select((i & 2) != Int(0), y, x));
+    } else if (group_ == 5) {
+        r = pick(which, x + y, x - y, x * y, x / y);
+    } else if (group_ == 6) {
+        const Int relations = int_of(x < y) | (int_of(x <= y) << 1) | (int_of(x == y) << 2) | (int_of(x != y) << 3) |
+                              (int_of(x > y) << 4) | (int_of(x >= y) << 5);
+        // double(int(x)) runs as trunc(x) (NIR's ~i2f(f2i(a)) -> ftrunc(a)), the rounding instruction's.
+        const Mask in_range = abs(x) < Double(2147483648.0) && (x >= Double(0.0) || x <= Double(-1.0));
+        r = pick(which, Double(float_of(x)), select(in_range, simd::trunc_pd(x), x),
+                 double_of(int_of(isnan(x)) + Int(2) * int_of(isinf(x))), double_of(relations));
+    } else if (group_ == 7) {
+        const DVec3 a(value(index, 0), value(index, 1), value(index, 2));
+        const DVec3 b(value(index, 3), value(index, 4), value(index, 5));
+        r = pick(which, dot(a, b), length(a), distance(a, b), normalize(a).x);
+    } else {
+        // basis * v: the columns scaled and summed left to right (simd/lane_mat.h's order).
+        const DVec3 v(x, y, z);
+        const Double column_sum = (Double(basis_[0].z) * v.x + Double(basis_[1].z) * v.y) + Double(basis_[2].z) * v.z;
+        r = pick(which, Double(scale_) * x, x + Double(offset_.y), column_sum,
+                 dot(DVec4(Double(corner_.x), Double(corner_.y), Double(corner_.z), Double(corner_.w)), DVec4(x, y, z, t)));
+    }
+    const UVec2 bits = unpackDouble2x32(r);
+    return Vec4(float_of(bits.x & UInt(0xFFFFu)), float_of(bits.x >> 16), float_of(bits.y & UInt(0xFFFFu)),
+                float_of(bits.y >> 16));
+}
+
+}  // namespace st
