@@ -59,6 +59,7 @@ void add_builtin_twins(TwinRegistry& r) {
     r.add_fragment("sample_bias", [] { return std::make_unique<SampleBiasFragment>(); });
     r.add_fragment("sample_grad", [] { return std::make_unique<SampleGradFragment>(); });
     r.add_fragment("texel_fetch", [] { return std::make_unique<TexelFetchFragment>(); });
+    r.add_fragment("texture_inputs", [] { return std::make_unique<TextureInputsFragment>(); });
     r.add_fragment("sample_cube", [] { return std::make_unique<SampleCubeFragment>(); });
     r.add_fragment("sample_cube_lod", [] { return std::make_unique<SampleCubeLodFragment>(); });
     r.add_fragment("sample_cube_bias", [] { return std::make_unique<SampleCubeBiasFragment>(); });

@@ -109,9 +109,7 @@ template <class Fn> ST_INLINE Double each_rounded(Double x, Fn round) {
     return r;
 }
 ST_INLINE Double floor_pd(Double x) { return each_rounded(x, [](double v) { return __builtin_floor(v); }); }
-ST_INLINE Double ceil_pd(Double x) { return each_rounded(x, [](double v) { return __builtin_ceil(v); }); }
 ST_INLINE Double trunc_pd(Double x) { return each_rounded(x, [](double v) { return __builtin_trunc(v); }); }
-ST_INLINE Double round_even_pd(Double x) { return each_rounded(x, [](double v) { return __builtin_roundeven(v); }); }
 
 ST_INLINE Double abs(Double x) { return double_from_bits(bits_of(x) & LongV ST_SPLAT(INT64_MAX)); }
 ST_INLINE Mask isnan(Double x) { return x != x; }

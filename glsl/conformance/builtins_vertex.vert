@@ -26,6 +26,7 @@
 //  23: floor and ceil of a double        24: trunc and roundEven of a double
 //  25: mod(x, y) and max(x, y) of doubles, fract, sqrt (each double's 64 bits as two channels,
 //      25 picking by the index)
+//  26: dmat3: determinant, inverse, dmat3 * dvec3, dvec3 * dmat3 (of finite doubles)
 // x takes both signs, every exponent (zeros, denormals, infinities and NaNs
 // among them) and eight mantissa patterns: 4096 cells on 64x64; y comes from
 // a table of edges, w and z from it with NaN's place taken by -2 (where two
@@ -203,6 +204,15 @@ void main() {
         dvec2 d = group == 23 ? dvec2(floor(dx), ceil(dx))
                 : group == 24 ? dvec2(trunc(dx), roundEven(dx))
                 : (index & 2) != 0 ? dvec2(mod(dx, dy), max(dx, dy)) : dvec2(fract(dx), sqrt(dx));
+        r = vec4(uintBitsToFloat(unpackDouble2x32(d.x)), uintBitsToFloat(unpackDouble2x32(d.y)));
+    } else if (group == 26) {
+        // Divided by constants (one rounding each, no rewrite: compiler-rewrites.md, entry 10) to fill the mantissas.
+        dvec3 da = dvec3(a) / 7.0lf, db = dvec3(b) / 3.0lf;
+        dvec3 dc = dvec3(value(index, 6), value(index, 7), value(index, 8)) / 5.0lf;
+        dvec3 dv = dvec3(value(index, 9), value(index, 10), value(index, 11)) / 9.0lf;
+        dmat3 dm = dmat3(da, db, dc);
+        int k = index % 3;
+        dvec2 d = (index & 2) != 0 ? dvec2(determinant(dm), (dm * dv)[k]) : dvec2(inverse(dm)[1][k], (dv * dm)[k]);
         r = vec4(uintBitsToFloat(unpackDouble2x32(d.x)), uintBitsToFloat(unpackDouble2x32(d.y)));
     } else {
         mat3 m = mat3(a, b, vec3(value(index, 6), value(index, 7), value(index, 8)));

@@ -181,6 +181,18 @@ void BuiltinsVertex::run(const glm::vec4* attributes, VertexOut& out) const {
         const glm::uvec2 hx = glsl::unpackDouble2x32(d.x), hy = glsl::unpackDouble2x32(d.y);
         r = glm::vec4(glsl::uintBitsToFloat(hx.x), glsl::uintBitsToFloat(hx.y), glsl::uintBitsToFloat(hy.x),
                       glsl::uintBitsToFloat(hy.y));
+    } else if (group_ == 26) {
+        const glm::dvec3 da = glm::dvec3(a) / 7.0, db = glm::dvec3(b) / 3.0;
+        const glm::dvec3 dc = glm::dvec3(value(index, 6), value(index, 7), value(index, 8)) / 5.0;
+        const glm::dvec3 dv = glm::dvec3(value(index, 9), value(index, 10), value(index, 11)) / 9.0;
+        const glm::dmat3 dm(da, db, dc);
+        const int k = index % 3;
+        // Mesa's cofactor expansions and GLSL's products, as for float matrices.
+        const glm::dvec2 d = (index & 2) != 0 ? glm::dvec2(glsl::determinant(dm), glsl::mul(dm, dv)[k])
+                                              : glm::dvec2(glsl::inverse(dm)[1][k], glsl::mul(dv, dm)[k]);
+        const glm::uvec2 hx = glsl::unpackDouble2x32(d.x), hy = glsl::unpackDouble2x32(d.y);
+        r = glm::vec4(glsl::uintBitsToFloat(hx.x), glsl::uintBitsToFloat(hx.y), glsl::uintBitsToFloat(hy.x),
+                      glsl::uintBitsToFloat(hy.y));
     } else {
         const glm::mat3 m(a, b, glm::vec3(value(index, 6), value(index, 7), value(index, 8)));
         const glm::mat3 inv = glsl::inverse(m);

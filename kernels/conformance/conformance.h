@@ -251,6 +251,16 @@ private:
     const Sampler2D* tex_ = nullptr;
 };
 
+class TextureInputsFragment final : public FragmentProgram<TextureInputsFragment> {  // texture_inputs.frag
+public:
+    void bind(const Bindings& b) override { inputs_ = &b.sampler("inputs"); }
+    uint32_t inputs_read() const override { return 0; }
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    const Sampler2D* inputs_ = nullptr;
+};
+
 class SampleCubeFragment final : public FragmentProgram<SampleCubeFragment> {  // sample_cube.frag
 public:
     void bind(const Bindings& b) override { env_ = &b.sampler_cube("env"); }

@@ -20,27 +20,27 @@
 
 namespace st::glsl {
 
-template <int C, int R, glm::qualifier Q>
-ST_INLINE glm::vec<R, float, Q> mul(const glm::mat<C, R, float, Q>& m, const glm::vec<C, float, Q>& v) {
-    glm::vec<R, float, Q> sum = m[0] * v[0];
+template <int C, int R, class T, glm::qualifier Q>
+ST_INLINE glm::vec<R, T, Q> mul(const glm::mat<C, R, T, Q>& m, const glm::vec<C, T, Q>& v) {
+    glm::vec<R, T, Q> sum = m[0] * v[0];
     for (int c = 1; c < C; ++c) sum = sum + m[c] * v[c];
     return sum;
 }
 
-template <int C, int R, glm::qualifier Q>
-ST_INLINE glm::vec<C, float, Q> mul(const glm::vec<R, float, Q>& v, const glm::mat<C, R, float, Q>& m) {
-    glm::vec<C, float, Q> r;
+template <int C, int R, class T, glm::qualifier Q>
+ST_INLINE glm::vec<C, T, Q> mul(const glm::vec<R, T, Q>& v, const glm::mat<C, R, T, Q>& m) {
+    glm::vec<C, T, Q> r;
     for (int j = 0; j < C; ++j) {
-        float sum = v[R - 1] * m[j][R - 1];
+        T sum = v[R - 1] * m[j][R - 1];
         for (int k = R - 2; k >= 0; --k) sum = sum + v[k] * m[j][k];
         r[j] = sum;
     }
     return r;
 }
 
-template <int K, int R, int C, glm::qualifier Q>
-ST_INLINE glm::mat<C, R, float, Q> mul(const glm::mat<K, R, float, Q>& a, const glm::mat<C, K, float, Q>& b) {
-    glm::mat<C, R, float, Q> p;
+template <int K, int R, int C, class T, glm::qualifier Q>
+ST_INLINE glm::mat<C, R, T, Q> mul(const glm::mat<K, R, T, Q>& a, const glm::mat<C, K, T, Q>& b) {
+    glm::mat<C, R, T, Q> p;
     for (int j = 0; j < C; ++j) p[j] = mul(a, b[j]);
     return p;
 }

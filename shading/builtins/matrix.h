@@ -27,6 +27,7 @@ namespace matrix_detail {
 template <class M> inline constexpr int square_size = 0;
 template <int N> inline constexpr int square_size<LaneMat<N, N>> = N;
 template <int N, glm::qualifier Q> inline constexpr int square_size<glm::mat<N, N, float, Q>> = N;
+template <int N, glm::qualifier Q> inline constexpr int square_size<glm::mat<N, N, double, Q>> = N;  // dmatN: the same expansions
 }  // namespace matrix_detail
 
 // matrixCompMult: element by element.
