@@ -428,6 +428,20 @@ TEST(GlslMath, DoubleLanesGiveTheScalarBitsAndLlvmpipesLowering) {
     EXPECT_EQ(glsl::round(3.5), 4.0);
     EXPECT_EQ(bits(glsl::sign(-0.0)), bits(0.0));
     EXPECT_EQ(bits(glsl::max(4.9e-324, -1.0)), bits(0.0));  // DAZ: the denormal comes back as 0
+    // frexp and ldexp: GLSL IR's integer lowering, zero's quirk included (conformance-builtins-double-frexp-ldexp).
+    int32_t e = 0;
+    EXPECT_EQ(glsl::frexp(12.0, e), 0.75);
+    EXPECT_EQ(e, 4);
+    EXPECT_EQ(glsl::ldexp(0.75, 4), 12.0);
+    EXPECT_EQ(glsl::ldexp(0.0, 0), 0.5);  // the exponent field 1022 + e over zero's mantissa
+    EXPECT_EQ(bits(glsl::ldexp(-3.0, -2000)), bits(-0.0));
+    for (double x : xs) {
+        Int le;
+        const double m = glsl::frexp(x, e);
+        EXPECT_EQ(bits(glsl::frexp(Double(x), le)[0]), bits(m)) << x;
+        EXPECT_EQ(le[0], e) << x;
+        EXPECT_EQ(bits(glsl::ldexp(Double(x), Int(-7))[0]), bits(glsl::ldexp(x, -7))) << x;
+    }
     const DVec3 a(Double(0.1), Double(-2.0), Double(3.0)), b(Double(7.0), Double(0.5), Double(-0.25));
     const glm::dvec3 ga(0.1, -2.0, 3.0), gb(7.0, 0.5, -0.25);
     EXPECT_EQ(bits(glsl::dot(a, b)[0]), bits(glsl::dot(ga, gb)));

@@ -15,6 +15,7 @@
 //      isnan + 2 isinf, the comparisons as bits
 //   7: dot, length, distance, normalize(a).x of finite dvec3s
 //   8: the uniforms: scale * x, x + offset.y, (basis * dvec3(x, y, z)).z, dot(corner, dvec4(x, y, z, t))
+//   9: frexp's significand and exponent, ldexp(x, e), ldexp(frexp(x)) (e from a table past the range)
 // x takes both signs, 64 exponents (zeros, denormals, the float range's
 // edges, 2^52 and 2^53, infinities and NaNs) and eight mantissa patterns
 // (one is a tie for float(x)); y and z come from a table of edges, t from a
@@ -54,6 +55,9 @@ const uint weights_hi[16] = uint[16](0x0u, 0x3FF00000u, 0x3FE00000u, 0x3FD00000u
                                      0xC0000000u, 0x7FF00000u, 0x3FD33333u, 0x3FE66666u);
 const uint weights_lo[16] = uint[16](0u, 0u, 0u, 0u, 0x9999999Au, 0xCCCCCCCDu, 0xE2308C3Au, 0xFFFFFFFFu, 0u, 0u, 0u,
                                      0u, 0u, 0u, 0x33333333u, 0x66666666u);
+
+const int exponent_steps[16] = int[16](0, 1, -1, 1023, -1022, 1024, -1074, 2046, -2046, 10, -10, 2047, -3000, 3000,
+                                       52, -52);
 
 double edge(int k) { return packDouble2x32(uvec2(edges_lo[k], edges_hi[k])); }
 
@@ -105,6 +109,11 @@ void main() {
         dvec3 a = dvec3(value(index, 0), value(index, 1), value(index, 2));
         dvec3 b = dvec3(value(index, 3), value(index, 4), value(index, 5));
         r = which == 0 ? dot(a, b) : which == 1 ? length(a) : which == 2 ? distance(a, b) : normalize(a).x;
+    } else if (group == 9) {
+        int fe;
+        double m = frexp(x, fe);
+        int e = exponent_steps[(i ^ (i >> 6)) & 15];
+        r = which == 0 ? m : which == 1 ? double(fe) : which == 2 ? ldexp(x, e) : ldexp(m, fe);
     } else {
         r = which == 0 ? scale * x : which == 1 ? x + offset.y : which == 2 ? (basis * dvec3(x, y, z)).z
                                                                : dot(corner, dvec4(x, y, z, t));

@@ -22,6 +22,8 @@ constexpr uint32_t kEdgesLo[16] = {0u, 0u, 0u, 0u, 0u, 0u, 0u, 0xC2F8F359u, 0x88
 constexpr uint32_t kWeightsHi[16] = {0x0u,        0x3FF00000u, 0x3FE00000u, 0x3FD00000u, 0x3FB99999u, 0x3FECCCCCu,
                                      0x3E45798Eu, 0x3FEFFFFFu, 0xBFE00000u, 0x3FF80000u, 0x80000000u, 0x40000000u,
                                      0xC0000000u, 0x7FF00000u, 0x3FD33333u, 0x3FE66666u};
+constexpr int32_t kExponentSteps[16] = {0, 1, -1, 1023, -1022, 1024, -1074, 2046, -2046, 10, -10, 2047, -3000, 3000,
+                                        52, -52};
 constexpr uint32_t kWeightsLo[16] = {0u, 0u, 0u, 0u, 0x9999999Au, 0xCCCCCCCDu, 0xE2308C3Au, 0xFFFFFFFFu,
                                      0u, 0u, 0u, 0u, 0u,          0u,          0x33333333u, 0x66666666u};
 
@@ -93,6 +95,11 @@ Vec4 BuiltinsDoubleFragment::main(const Fragment& frag) const {
         const DVec3 a(value(index, 0), value(index, 1), value(index, 2));
         const DVec3 b(value(index, 3), value(index, 4), value(index, 5));
         r = pick(which, dot(a, b), length(a), distance(a, b), normalize(a).x);
+    } else if (group_ == 9) {
+        Int fe;
+        const Double m = frexp(x, fe);
+        const Int e = glsl::element(kExponentSteps, (i ^ (i >> 6)) & 15);
+        r = pick(which, m, double_of(fe), ldexp(x, e), ldexp(m, fe));
     } else {
         // basis * v: the columns scaled and summed left to right (simd/lane_mat.h's order).
         const DVec3 v(x, y, z);

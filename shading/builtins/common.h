@@ -315,4 +315,49 @@ ST_INLINE Float frexp(Float x, Int& e) { return detail::frexp(x, e); }
 ST_INLINE float ldexp(float x, int32_t e) { return detail::ldexp(x, e); }
 ST_INLINE Float ldexp(Float x, Int e) { return detail::ldexp(x, e); }
 
+// frexp and ldexp of doubles, as GLSL IR's DFREXP_DLDEXP_TO_ARITH writes them
+// (llvmpipe reports no double frexp): integer code on the high word. Zero
+// and denormals (zero under DAZ) give exponent 0 and themselves; infinities
+// and NaN exponent 1025. ldexp(x, e) puts frexp's biased exponent plus e
+// into the exponent field where that is at least 1, else gives +-0; so a
+// zero or denormal x gives the field 1022 + e over its own mantissa
+// (ldexp(0.0, 0) is 0.5), and a field past 2047 wraps (GLSL leaves
+// overflow undefined).
+namespace dbl {
+ST_INLINE bool nonzero_under_daz(uint64_t b) { return (b & 0x7FF0000000000000ull) != 0; }
+ST_INLINE double frexp(double x, int32_t& e) {
+    const uint64_t b = std::bit_cast<uint64_t>(x);
+    const bool nonzero = nonzero_under_daz(b);
+    e = nonzero ? int32_t((uint32_t(b >> 32) & 0x7FFFFFFFu) >> 20) - 1022 : 0;
+    const uint32_t hi = (uint32_t(b >> 32) & 0x800FFFFFu) | (nonzero ? 0x3FE00000u : 0u);
+    return std::bit_cast<double>((uint64_t(hi) << 32) | (b & 0xFFFFFFFFull));
+}
+ST_INLINE double ldexp(double x, int32_t e) {
+    const uint64_t b = std::bit_cast<uint64_t>(x);
+    const int32_t exponent = nonzero_under_daz(b) ? int32_t((uint32_t(b >> 32) & 0x7FFFFFFFu) >> 20) - 1022 : 0;
+    int32_t biased = int32_t(uint32_t(exponent + 1022) + uint32_t(e));  // wraps, as the GPU's add
+    const bool keep = biased >= 1;
+    const uint64_t kept = keep ? b : (b & 0x8000000000000000ull);
+    biased = keep ? biased : 0;
+    const uint32_t hi = (uint32_t(kept >> 32) & ~(0x7FFu << 20)) | ((uint32_t(biased) & 0x7FFu) << 20);
+    return std::bit_cast<double>((uint64_t(hi) << 32) | (kept & 0xFFFFFFFFull));
+}
+}  // namespace dbl
+ST_INLINE double frexp(double x, int32_t& e) { return dbl::frexp(x, e); }
+ST_INLINE double ldexp(double x, int32_t e) { return dbl::ldexp(x, e); }
+ST_INLINE Double frexp(Double x, Int& e) {
+    Double r;
+    for (int l = 0; l < kLanes; ++l) {
+        int32_t el = 0;
+        r.set(l, dbl::frexp(x[l], el));
+        e.set(l, el);
+    }
+    return r;
+}
+ST_INLINE Double ldexp(Double x, Int e) {
+    Double r;
+    for (int l = 0; l < kLanes; ++l) r.set(l, dbl::ldexp(x[l], e[l]));
+    return r;
+}
+
 }  // namespace st::glsl
