@@ -1,6 +1,7 @@
 // lane_mat.h: GLSL's matrix types with one invocation per lane: MatCxR is
 // C columns of R-component lane vectors (GLSL's matCxR; Mat2, Mat3, Mat4
-// are the square ones), m[c] a column and m[c][r] an element, as in GLSL.
+// are the square ones; DMatCxR the dmat ones, of Double lanes), m[c] a
+// column and m[c][r] an element, as in GLSL.
 // Constructors are GLSL's: a diagonal from one scalar, the columns, the
 // C * R scalars column by column, another matrix's top-left with the
 // identity elsewhere, a uniform glm matrix. The operators do what GLSL IR's
@@ -21,15 +22,18 @@
 
 namespace st {
 
-template <int C, int R> struct LaneMat {
-    using Column = LaneVec<Float, R>;
+// T is Float (GLSL's matCxR) or Double (dmatCxR).
+template <int C, int R, class T = Float> struct LaneMat {
+    using Column = LaneVec<T, R>;
+    // The host type of one element (a uniform's glm matrix holds these).
+    using Host = std::conditional_t<std::is_same_v<T, Double>, double, float>;
     Column col[C];
 
     LaneMat() = default;
     // s on the diagonal, 0 elsewhere (GLSL mat3(s)).
-    explicit LaneMat(Float s) {
+    explicit LaneMat(T s) {
         for (int c = 0; c < C; ++c)
-            for (int r = 0; r < R; ++r) col[c][r] = c == r ? s : Float(0.0f);
+            for (int r = 0; r < R; ++r) col[c][r] = c == r ? s : T(0.0f);
     }
     // The columns.
     template <class... Cols>
@@ -37,23 +41,23 @@ template <int C, int R> struct LaneMat {
     LaneMat(const Cols&... cols) : col{cols...} {}
     // C * R scalars, column by column (GLSL mat2(a, b, c, d)).
     template <class... S>
-        requires(sizeof...(S) == C * R && C * R > 1 && (std::is_convertible_v<S, Float> && ...))
+        requires(sizeof...(S) == C * R && C * R > 1 && (std::is_convertible_v<S, T> && ...))
     LaneMat(const S&... s) {
-        const Float e[] = {Float(s)...};
+        const T e[] = {T(s)...};
         for (int c = 0; c < C; ++c)
             for (int r = 0; r < R; ++r) col[c][r] = e[c * R + r];
     }
     // Another matrix's top-left; the identity's elements elsewhere.
     template <int C2, int R2>
         requires(C2 != C || R2 != R)
-    explicit LaneMat(const LaneMat<C2, R2>& m) {
+    explicit LaneMat(const LaneMat<C2, R2, T>& m) {
         for (int c = 0; c < C; ++c)
-            for (int r = 0; r < R; ++r) col[c][r] = c < C2 && r < R2 ? m[c][r] : Float(c == r ? 1.0f : 0.0f);
+            for (int r = 0; r < R; ++r) col[c][r] = c < C2 && r < R2 ? m[c][r] : T(c == r ? 1.0f : 0.0f);
     }
     // A uniform, the same in every lane.
-    template <glm::qualifier Q> explicit LaneMat(const glm::mat<C, R, float, Q>& m) {
+    template <glm::qualifier Q> explicit LaneMat(const glm::mat<C, R, Host, Q>& m) {
         for (int c = 0; c < C; ++c)
-            for (int r = 0; r < R; ++r) col[c][r] = Float(m[c][r]);
+            for (int r = 0; r < R; ++r) col[c][r] = T(m[c][r]);
     }
 
     ST_INLINE Column& operator[](int c) { return col[c]; }
@@ -69,54 +73,64 @@ using Mat3x2 = LaneMat<3, 2>;
 using Mat3x4 = LaneMat<3, 4>;
 using Mat4x2 = LaneMat<4, 2>;
 using Mat4x3 = LaneMat<4, 3>;
+using DMat2 = LaneMat<2, 2, Double>;
+using DMat3 = LaneMat<3, 3, Double>;
+using DMat4 = LaneMat<4, 4, Double>;
+using DMat2x3 = LaneMat<2, 3, Double>;
+using DMat2x4 = LaneMat<2, 4, Double>;
+using DMat3x2 = LaneMat<3, 2, Double>;
+using DMat3x4 = LaneMat<3, 4, Double>;
+using DMat4x2 = LaneMat<4, 2, Double>;
+using DMat4x3 = LaneMat<4, 3, Double>;
 
 // m * v: the columns scaled by v's components, summed left to right.
-template <int C, int R> ST_INLINE LaneVec<Float, R> operator*(const LaneMat<C, R>& m, const LaneVec<Float, C>& v) {
-    LaneVec<Float, R> sum = m[0] * v.x;
+template <int C, int R, class T> ST_INLINE LaneVec<T, R> operator*(const LaneMat<C, R, T>& m, const LaneVec<T, C>& v) {
+    LaneVec<T, R> sum = m[0] * v.x;
     for (int c = 1; c < C; ++c) sum = sum + m[c] * v[c];
     return sum;
 }
 // v * m: dot(v, m[j]) per column, the products summed from the last back
 // (NIR's lowered dot).
-template <int C, int R> ST_INLINE LaneVec<Float, C> operator*(const LaneVec<Float, R>& v, const LaneMat<C, R>& m) {
-    LaneVec<Float, C> r;
+template <int C, int R, class T> ST_INLINE LaneVec<T, C> operator*(const LaneVec<T, R>& v, const LaneMat<C, R, T>& m) {
+    LaneVec<T, C> r;
     for (int j = 0; j < C; ++j) {
-        Float sum = v[R - 1] * m[j][R - 1];
+        T sum = v[R - 1] * m[j][R - 1];
         for (int k = R - 2; k >= 0; --k) sum = sum + v[k] * m[j][k];
         r[j] = sum;
     }
     return r;
 }
 // a * b: column j is a * b[j].
-template <int K, int R, int C> ST_INLINE LaneMat<C, R> operator*(const LaneMat<K, R>& a, const LaneMat<C, K>& b) {
-    LaneMat<C, R> p;
+template <int K, int R, int C, class T>
+ST_INLINE LaneMat<C, R, T> operator*(const LaneMat<K, R, T>& a, const LaneMat<C, K, T>& b) {
+    LaneMat<C, R, T> p;
     for (int j = 0; j < C; ++j) p[j] = a * b[j];
     return p;
 }
 
 // Element by element.
-template <int C, int R, class F> ST_INLINE LaneMat<C, R> each_column(const LaneMat<C, R>& m, F f) {
-    LaneMat<C, R> r;
+template <int C, int R, class T, class F> ST_INLINE LaneMat<C, R, T> each_column(const LaneMat<C, R, T>& m, F f) {
+    LaneMat<C, R, T> r;
     for (int c = 0; c < C; ++c) r[c] = f(m[c], c);
     return r;
 }
-template <int C, int R> ST_INLINE LaneMat<C, R> operator*(const LaneMat<C, R>& m, Float s) {
-    return each_column(m, [&](const LaneVec<Float, R>& v, int) { return v * s; });
+template <int C, int R, class T> ST_INLINE LaneMat<C, R, T> operator*(const LaneMat<C, R, T>& m, std::type_identity_t<T> s) {
+    return each_column(m, [&](const LaneVec<T, R>& v, int) { return v * s; });
 }
-template <int C, int R> ST_INLINE LaneMat<C, R> operator*(Float s, const LaneMat<C, R>& m) {
-    return each_column(m, [&](const LaneVec<Float, R>& v, int) { return s * v; });
+template <int C, int R, class T> ST_INLINE LaneMat<C, R, T> operator*(std::type_identity_t<T> s, const LaneMat<C, R, T>& m) {
+    return each_column(m, [&](const LaneVec<T, R>& v, int) { return s * v; });
 }
-template <int C, int R> ST_INLINE LaneMat<C, R> operator/(const LaneMat<C, R>& m, Float s) {
-    return each_column(m, [&](const LaneVec<Float, R>& v, int) { return v / s; });
+template <int C, int R, class T> ST_INLINE LaneMat<C, R, T> operator/(const LaneMat<C, R, T>& m, std::type_identity_t<T> s) {
+    return each_column(m, [&](const LaneVec<T, R>& v, int) { return v / s; });
 }
-template <int C, int R> ST_INLINE LaneMat<C, R> operator+(const LaneMat<C, R>& a, const LaneMat<C, R>& b) {
-    return each_column(a, [&](const LaneVec<Float, R>& v, int c) { return v + b[c]; });
+template <int C, int R, class T> ST_INLINE LaneMat<C, R, T> operator+(const LaneMat<C, R, T>& a, const LaneMat<C, R, T>& b) {
+    return each_column(a, [&](const LaneVec<T, R>& v, int c) { return v + b[c]; });
 }
-template <int C, int R> ST_INLINE LaneMat<C, R> operator-(const LaneMat<C, R>& a, const LaneMat<C, R>& b) {
-    return each_column(a, [&](const LaneVec<Float, R>& v, int c) { return v - b[c]; });
+template <int C, int R, class T> ST_INLINE LaneMat<C, R, T> operator-(const LaneMat<C, R, T>& a, const LaneMat<C, R, T>& b) {
+    return each_column(a, [&](const LaneVec<T, R>& v, int c) { return v - b[c]; });
 }
-template <int C, int R> ST_INLINE LaneMat<C, R> operator-(const LaneMat<C, R>& m) {
-    return each_column(m, [&](const LaneVec<Float, R>& v, int) { return -v; });
+template <int C, int R, class T> ST_INLINE LaneMat<C, R, T> operator-(const LaneMat<C, R, T>& m) {
+    return each_column(m, [&](const LaneVec<T, R>& v, int) { return -v; });
 }
 
 }  // namespace st

@@ -16,6 +16,10 @@
 //   7: dot, length, distance, normalize(a).x of finite dvec3s
 //   8: the uniforms: scale * x, x + offset.y, (basis * dvec3(x, y, z)).z, dot(corner, dvec4(x, y, z, t))
 //   9: frexp's significand and exponent, ldexp(x, e), ldexp(frexp(x)) (e from a table past the range)
+//  10: dmat: determinant, inverse, products (m * v, v * m, m * m), transpose, matrixCompMult,
+//      outerProduct, of finite doubles (the index picks the shape and the element)
+//  11: the relational functions of dvec3s as bits, reflect, refract, faceforward and cross,
+//      fma (not fused), modf's whole part and mix(x, y, bvec)
 // x takes both signs, 64 exponents (zeros, denormals, the float range's
 // edges, 2^52 and 2^53, infinities and NaNs) and eight mantissa patterns
 // (one is a tie for float(x)); y and z come from a table of edges, t from a
@@ -114,6 +118,39 @@ void main() {
         double m = frexp(x, fe);
         int e = exponent_steps[(i ^ (i >> 6)) & 15];
         r = which == 0 ? m : which == 1 ? double(fe) : which == 2 ? ldexp(x, e) : ldexp(m, fe);
+    } else if (group == 10) {
+        dmat2 m2 = dmat2(value(index, 0), value(index, 1), value(index, 2), value(index, 3));
+        dmat3 m3 = dmat3(value(index, 4), value(index, 5), value(index, 6), value(index, 7), value(index, 8),
+                         value(index, 9), value(index, 10), value(index, 11), value(index, 12));
+        dmat3 n3 = dmat3(value(index, 13), value(index, 14), value(index, 15), value(index, 16), value(index, 17),
+                         value(index, 18), value(index, 19), value(index, 20), value(index, 21));
+        dmat4 m4 = dmat4(dvec4(value(index, 22), value(index, 23), value(index, 24), value(index, 25)),
+                         dvec4(value(index, 26), value(index, 27), value(index, 28), value(index, 29)),
+                         dvec4(value(index, 30), value(index, 31), value(index, 32), value(index, 33)),
+                         dvec4(value(index, 34), value(index, 35), value(index, 36), value(index, 37)));
+        dvec3 v = dvec3(value(index, 38), value(index, 39), value(index, 40));
+        dvec2 w = dvec2(value(index, 41), value(index, 42));
+        int j = i & 3, c = (i >> 2) % 3, e = (i >> 4) % 3;
+        double d = j == 0 ? determinant(m2) : j == 1 ? determinant(m3) : j == 2 ? determinant(m4) : (m3 * n3)[c][e];
+        double inv = j == 0 ? inverse(m2)[c & 1][e & 1] : j == 1 ? inverse(m3)[c][e] : inverse(m4)[c][e + (i & 1)];
+        double prod = j == 0 ? (m3 * v)[c] : j == 1 ? (v * m3)[c] : j == 2 ? (dmat2x3(m3) * w)[c] : (m4 * dvec4(v, value(index, 43)))[e];
+        double other = j == 0 ? transpose(m4)[c][e] : j == 1 ? matrixCompMult(m3, n3)[c][e] : outerProduct(v, w)[c & 1][e];
+        r = which == 0 ? d : which == 1 ? inv : which == 2 ? prod : other;
+    } else if (group == 11) {
+        dvec3 a = dvec3(value(index, 0), value(index, 1), value(index, 2));
+        dvec3 b = dvec3(value(index, 3), value(index, 4), value(index, 5));
+        dvec3 n = normalize(dvec3(value(index, 6), value(index, 7), value(index, 8)));
+        int k = (i >> 2) % 3;
+        int relations = int(any(lessThan(dvec3(x, y, z), dvec3(y, z, x)))) |
+                        (int(all(greaterThanEqual(dvec3(x, y, z), dvec3(z, x, y)))) << 1) |
+                        (int(any(equal(dvec2(x, y), dvec2(z, x)))) << 2) | (int(all(notEqual(dvec2(x, y), dvec2(y, z)))) << 3) |
+                        (int(lessThanEqual(dvec2(x, t), dvec2(t, y)).y) << 4) | (int(greaterThan(dvec2(x, z), dvec2(y, t)).x) << 5);
+        double whole;
+        double f = modf(x, whole);
+        r = which == 0 ? ((i & 1) != 0 ? double(relations) : fma(x, y, z))
+          : which == 1 ? ((i & 1) != 0 ? reflect(a, n)[k] : refract(normalize(a), n, scale)[k])
+          : which == 2 ? ((i & 1) != 0 ? faceforward(a, b, n)[k] : cross(a, b)[k])
+          : ((i & 2) != 0 ? whole : (i & 1) != 0 ? f : mix(x, y, (i & 4) != 0));
     } else {
         r = which == 0 ? scale * x : which == 1 ? x + offset.y : which == 2 ? (basis * dvec3(x, y, z)).z
                                                                : dot(corner, dvec4(x, y, z, t));

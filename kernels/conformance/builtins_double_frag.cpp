@@ -50,8 +50,9 @@ Double pick(Int which, Double r0, Double r1, Double r2, Double r3) {
 
 void BuiltinsDoubleFragment::bind(const Bindings& b) {
     group_ = b.get_int("group");
-    if (group_ != 8) return;  // only group 8 reads them (the other scenes leave them unset, as GL's 0)
+    if (group_ != 8 && group_ != 11) return;  // only groups 8 and 11 read them (the other scenes leave them unset)
     scale_ = b.get_double("scale");
+    if (group_ == 11) return;
     offset_ = b.get_dvec3("offset");
     basis_ = b.get_dmat3("basis");
     corner_ = b.get_dvec4("corner");
@@ -100,6 +101,57 @@ Vec4 BuiltinsDoubleFragment::main(const Fragment& frag) const {
         const Double m = frexp(x, fe);
         const Int e = glsl::element(kExponentSteps, (i ^ (i >> 6)) & 15);
         r = pick(which, m, double_of(fe), ldexp(x, e), ldexp(m, fe));
+    } else if (group_ == 10) {
+        const DMat2 m2(value(index, 0), value(index, 1), value(index, 2), value(index, 3));
+        const DMat3 m3(value(index, 4), value(index, 5), value(index, 6), value(index, 7), value(index, 8), value(index, 9),
+                       value(index, 10), value(index, 11), value(index, 12));
+        const DMat3 n3(value(index, 13), value(index, 14), value(index, 15), value(index, 16), value(index, 17),
+                       value(index, 18), value(index, 19), value(index, 20), value(index, 21));
+        const DMat4 m4(DVec4(value(index, 22), value(index, 23), value(index, 24), value(index, 25)),
+                       DVec4(value(index, 26), value(index, 27), value(index, 28), value(index, 29)),
+                       DVec4(value(index, 30), value(index, 31), value(index, 32), value(index, 33)),
+                       DVec4(value(index, 34), value(index, 35), value(index, 36), value(index, 37)));
+        const DVec3 v(value(index, 38), value(index, 39), value(index, 40));
+        const DVec2 w(value(index, 41), value(index, 42));
+        // The GLSL indexes by per-pixel ints; each lane picks its own element here.
+        Double d, inv, prod, other;
+        for (int l = 0; l < kLanes; ++l) {
+            const int il = i[l], j = il & 3, c = (il >> 2) % 3, e = (il >> 4) % 3;
+            d.set(l, (j == 0 ? determinant(m2) : j == 1 ? determinant(m3) : j == 2 ? determinant(m4) : (m3 * n3)[c][e])[l]);
+            inv.set(l, (j == 0 ? inverse(m2)[c & 1][e & 1] : j == 1 ? inverse(m3)[c][e] : inverse(m4)[c][e + (il & 1)])[l]);
+            prod.set(l, (j == 0 ? (m3 * v)[c] : j == 1 ? (v * m3)[c] : j == 2 ? (DMat2x3(m3) * w)[c]
+                                                                            : (m4 * DVec4(v, value(index, 43)))[e])[l]);
+            other.set(l, (j == 0 ? transpose(m4)[c][e] : j == 1 ? matrixCompMult(m3, n3)[c][e] : outerProduct(v, w)[c & 1][e])[l]);
+        }
+        r = pick(which, d, inv, prod, other);
+    } else if (group_ == 11) {
+        const DVec3 a(value(index, 0), value(index, 1), value(index, 2));
+        const DVec3 b(value(index, 3), value(index, 4), value(index, 5));
+        const DVec3 n = normalize(DVec3(value(index, 6), value(index, 7), value(index, 8)));
+        const Int relations = int_of(any(lessThan(DVec3(x, y, z), DVec3(y, z, x)))) |
+                              (int_of(all(greaterThanEqual(DVec3(x, y, z), DVec3(z, x, y)))) << 1) |
+                              (int_of(any(equal(DVec2(x, y), DVec2(z, x)))) << 2) |
+                              (int_of(all(notEqual(DVec2(x, y), DVec2(y, z)))) << 3) |
+                              (int_of(lessThanEqual(DVec2(x, t), DVec2(t, y)).y) << 4) |
+                              (int_of(greaterThan(DVec2(x, z), DVec2(y, t)).x) << 5);
+        Double whole;
+        const Double f = modf(x, whole);
+        const DVec3 reflected = reflect(a, n), refracted = refract(normalize(a), n, Double(scale_));
+        const DVec3 faced = faceforward(a, b, n), crossed = cross(a, b);
+        Double r1, r2;
+        for (int l = 0; l < kLanes; ++l) {
+            const int k = (i[l] >> 2) % 3;
+            r1.set(l, reflected[k][l]);
+            r2.set(l, faced[k][l]);
+            const Double refr_k = refracted[k], cross_k = crossed[k];
+            if ((i[l] & 1) == 0) {
+                r1.set(l, refr_k[l]);
+                r2.set(l, cross_k[l]);
+            }
+        }
+        const Mask odd = (i & 1) != Int(0);
+        r = pick(which, select(odd, double_of(relations), fma(x, y, z)), r1, r2,
+                 select((i & 2) != Int(0), whole, select(odd, f, mix(x, y, (i & 4) != Int(0)))));
     } else {
         // basis * v: the columns scaled and summed left to right (simd/lane_mat.h's order).
         const DVec3 v(x, y, z);

@@ -310,6 +310,21 @@ ST_INLINE float fma(float a, float b, float c) { return a * b + c; }
 ST_INLINE Float fma(Float a, Float b, Float c) { return a * b + c; }
 ST_GLSL_COMPONENTWISE_3(fma)
 
+// fma, modf and mix(x, y, bool) of doubles: a * b + c (lower_ffma64),
+// trunc(x) and x - trunc(x) with trunc as dbl::trunc, and a selection.
+ST_INLINE double fma(double a, double b, double c) { return a * b + c; }
+ST_INLINE Double fma(Double a, Double b, Double c) { return a * b + c; }
+ST_INLINE double modf(double x, double& i) {
+    i = dbl::trunc(x);
+    return x - i;
+}
+ST_INLINE Double modf(Double x, Double& i) {
+    i = dbl::trunc(x);
+    return x - i;
+}
+ST_INLINE double mix(double x, double y, bool a) { return a ? y : x; }
+ST_INLINE Double mix(Double x, Double y, Mask a) { return simd::select(a, y, x); }
+
 ST_INLINE float frexp(float x, int32_t& e) { return detail::frexp(x, e); }
 ST_INLINE Float frexp(Float x, Int& e) { return detail::frexp(x, e); }
 ST_INLINE float ldexp(float x, int32_t e) { return detail::ldexp(x, e); }

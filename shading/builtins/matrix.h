@@ -25,27 +25,27 @@ namespace st::glsl {
 namespace matrix_detail {
 // N for a square N x N matrix, lanes or glm; 0 for anything else.
 template <class M> inline constexpr int square_size = 0;
-template <int N> inline constexpr int square_size<LaneMat<N, N>> = N;
+template <int N, class T> inline constexpr int square_size<LaneMat<N, N, T>> = N;
 template <int N, glm::qualifier Q> inline constexpr int square_size<glm::mat<N, N, float, Q>> = N;
 template <int N, glm::qualifier Q> inline constexpr int square_size<glm::mat<N, N, double, Q>> = N;  // dmatN: the same expansions
 }  // namespace matrix_detail
 
 // matrixCompMult: element by element.
-template <int C, int R> ST_INLINE LaneMat<C, R> matrixCompMult(const LaneMat<C, R>& a, const LaneMat<C, R>& b) {
-    LaneMat<C, R> r;
+template <int C, int R, class T> ST_INLINE LaneMat<C, R, T> matrixCompMult(const LaneMat<C, R, T>& a, const LaneMat<C, R, T>& b) {
+    LaneMat<C, R, T> r;
     for (int c = 0; c < C; ++c) r[c] = a[c] * b[c];
     return r;
 }
 
 // outerProduct(c, r): column i is c * r[i].
-template <int R, int C> ST_INLINE LaneMat<C, R> outerProduct(const LaneVec<Float, R>& c, const LaneVec<Float, C>& r) {
-    LaneMat<C, R> m;
+template <int R, int C, class T> ST_INLINE LaneMat<C, R, T> outerProduct(const LaneVec<T, R>& c, const LaneVec<T, C>& r) {
+    LaneMat<C, R, T> m;
     for (int i = 0; i < C; ++i) m[i] = c * r[i];
     return m;
 }
 
-template <int C, int R> ST_INLINE LaneMat<R, C> transpose(const LaneMat<C, R>& m) {
-    LaneMat<R, C> t;
+template <int C, int R, class T> ST_INLINE LaneMat<R, C, T> transpose(const LaneMat<C, R, T>& m) {
+    LaneMat<R, C, T> t;
     for (int c = 0; c < C; ++c)
         for (int r = 0; r < R; ++r) t[r][c] = m[c][r];
     return t;

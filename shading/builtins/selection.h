@@ -13,6 +13,7 @@ namespace st::glsl {
 // takes one. A small if/else that only assigns is the same after NIR's
 // peephole_select; twins write it this way so one source serves both types.
 ST_INLINE float select(bool c, float a, float b) { return c ? a : b; }
+ST_INLINE double select(bool c, double a, double b) { return c ? a : b; }
 ST_INLINE glm::vec3 select(bool c, const glm::vec3& a, const glm::vec3& b) { return c ? a : b; }
 using simd::select;  // Float, Int and Mask per lane
 ST_INLINE Vec3 select(Mask c, const Vec3& a, const Vec3& b) { return st::select(c, a, b); }
