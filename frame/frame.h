@@ -47,6 +47,14 @@ struct Uniform {
     std::array<double, 16> value{};
 };
 
+// An integer uniform's value as the 32 bits glUniform*i and *ui take (its
+// two's complement), without undefined behaviour for any double: 0 for a
+// value no int32 or uint32 holds (NaN included).
+inline uint32_t uniform_integer_bits(double v) {
+    if (!(v >= -2147483648.0 && v <= 4294967295.0)) return 0u;
+    return uint32_t(int64_t(v));
+}
+
 // Whether a uniform of type t holds integers (int, uint, bool and their
 // vectors), which glUniform*i and *ui set.
 inline bool uniform_type_is_integer(UniformType t) {

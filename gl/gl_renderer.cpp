@@ -203,8 +203,8 @@ void set_uniform(const GlApi& gl, GLuint program, const Uniform& u) {
     std::array<GLuint, 4> ui{};
     for (size_t k = 0; k < v.size(); ++k) v[k] = float(d[k]);
     for (size_t k = 0; k < i.size(); ++k) {
-        i[k] = uniform_type_is_integer(u.type) ? GLint(d[k]) : 0;
-        ui[k] = uniform_type_is_integer(u.type) ? GLuint(d[k]) : 0u;
+        ui[k] = uniform_type_is_integer(u.type) ? GLuint(uniform_integer_bits(d[k])) : 0u;
+        i[k] = GLint(int32_t(ui[k]));
     }
     switch (u.type) {
         case UniformType::Float: gl.Uniform1f(loc, v[0]); break;
@@ -289,6 +289,12 @@ struct GlRenderer::State {
         std::vector<GLuint> fbos, depths;
     };
     std::map<std::pair<std::string, std::string>, GLuint> programs;  // kept across frames
+    // Per program, the uniforms the last draw that used it set. A program
+    // keeps its uniform values across draws and frames, so one a later draw
+    // leaves out would read the earlier draw's value (an earlier scene's, in
+    // one process); each execute sets those back to 0, what a program that
+    // was never given them reads (explore conformance --seed 31).
+    std::map<GLuint, std::vector<Uniform>> last_uniforms;
     std::vector<Target> passes;
     std::map<std::string, Named> named;
 
@@ -334,6 +340,7 @@ void GlRenderer::set_fragment_filter(FragmentFilter filter) {
     const GlApi& gl = context_->gl();
     for (auto& [key, program] : state_->programs) gl.DeleteProgram(program);
     state_->programs.clear();
+    state_->last_uniforms.clear();
     fragment_filter_ = std::move(filter);
 }
 
@@ -527,7 +534,14 @@ void GlRenderer::execute() {
                                 d.vertices.data.data());
             }
             gl.UseProgram(d.program);
+            std::vector<Uniform>& last = state_->last_uniforms[d.program];
+            for (const Uniform& earlier : last) {
+                const bool set_now = std::any_of(d.uniforms.begin(), d.uniforms.end(),
+                                                 [&](const Uniform& u) { return u.name == earlier.name; });
+                if (!set_now) set_uniform(gl, d.program, Uniform{earlier.name, earlier.type, {}});
+            }
             for (const Uniform& u : d.uniforms) set_uniform(gl, d.program, u);
+            last = d.uniforms;
             for (size_t b = 0; b < d.block_buffers.size(); ++b) {
                 gl.UniformBlockBinding(d.program, d.block_indices[b], d.block_indices[b]);
                 gl.BindBufferBase(GL_UNIFORM_BUFFER, d.block_indices[b], d.block_buffers[b]);

@@ -65,11 +65,8 @@ void put(std::vector<uint8_t>& bytes, GLint offset, const void* value, size_t si
 void put_value(std::vector<uint8_t>& bytes, GLint offset, const Shape& s, double v) {
     if (s.is_double) {
         put(bytes, offset, &v, 8);
-    } else if (s.is_unsigned) {
-        const uint32_t x = uint32_t(v);
-        put(bytes, offset, &x, 4);
-    } else if (s.integer) {
-        const int32_t x = int32_t(v);
+    } else if (s.integer) {  // int32 or uint32: the same 32 bits
+        const uint32_t x = uniform_integer_bits(v);
         put(bytes, offset, &x, 4);
     } else {
         const float x = float(v);

@@ -2,6 +2,7 @@
 #include "shading/program.h"
 
 #include <stdexcept>
+#include <type_traits>
 
 namespace st {
 
@@ -24,13 +25,20 @@ float Bindings::get_float(const std::string& name) const {
 }
 
 int Bindings::get_int(const std::string& name) const {
-    return int(find(uniforms, name, UniformType::Int).value[0]);
+    return int32_t(uniform_integer_bits(find(uniforms, name, UniformType::Int).value[0]));
+}
+
+bool Bindings::has(const std::string& name) const {
+    if (uniforms)
+        for (const Uniform& u : *uniforms)
+            if (u.name == name) return true;
+    return false;
 }
 
 int Bindings::get_int_or(const std::string& name, int fallback) const {
     if (uniforms)
         for (const Uniform& u : *uniforms)
-            if (u.name == name && u.type == UniformType::Int) return int(u.value[0]);
+            if (u.name == name && u.type == UniformType::Int) return int32_t(uniform_integer_bits(u.value[0]));
     return fallback;
 }
 
@@ -48,7 +56,10 @@ template <int C, int R, class T = float> glm::mat<C, R, T> matrix_of(const Unifo
 // An N-vector uniform of element type T (the Uniform holds each exactly).
 template <int N, class T> glm::vec<N, T> vector_of(const Uniform& u) {
     glm::vec<N, T> v;
-    for (int i = 0; i < N; ++i) v[i] = T(u.value[size_t(i)]);
+    for (int i = 0; i < N; ++i) {
+        if constexpr (std::is_integral_v<T>) v[i] = T(uniform_integer_bits(u.value[size_t(i)]));
+        else v[i] = T(u.value[size_t(i)]);
+    }
     return v;
 }
 
@@ -65,7 +76,7 @@ glm::uvec3 Bindings::get_uvec3(const std::string& name) const { return vector_of
 glm::uvec4 Bindings::get_uvec4(const std::string& name) const { return vector_of<4, uint32_t>(find(uniforms, name, UniformType::UVec4)); }
 
 uint32_t Bindings::get_uint(const std::string& name) const {
-    return uint32_t(find(uniforms, name, UniformType::UInt).value[0]);
+    return uniform_integer_bits(find(uniforms, name, UniformType::UInt).value[0]);
 }
 
 glm::mat2 Bindings::get_mat2(const std::string& name) const { return matrix_of<2, 2>(find(uniforms, name, UniformType::Mat2)); }

@@ -57,6 +57,8 @@ struct Bindings {
     // another type, so a scene that forgets one fails loudly.
     float get_float(const std::string& name) const;
     int get_int(const std::string& name) const;
+    // Whether the draw sets a uniform of this name (GL reads an unset one as 0).
+    bool has(const std::string& name) const;
     // An int the scene may leave out (the condition map's perturbation).
     int get_int_or(const std::string& name, int fallback) const;
     glm::vec2 get_vec2(const std::string& name) const;

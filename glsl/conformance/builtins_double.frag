@@ -14,7 +14,7 @@
 //      it as trunc(x), whose -0.0 there depends on the host's vector width),
 //      isnan + 2 isinf, the comparisons as bits
 //   7: dot, length, distance, normalize(a).x of finite dvec3s
-//   8: the uniforms: scale * x, x + offset.y, (basis * dvec3(x, y, z)).z, dot(corner, dvec4(x, y, z, t))
+//   8: the uniforms: scale * x, x + offset.y, (basis * dvec3(x, 0.5, -2)).z, dot(corner, dvec4(x, 0.25, 3, -1.5))
 //   9: frexp's significand and exponent, ldexp(x, e), ldexp(frexp(x)) (e from a table past the range)
 //  10: dmat: determinant, inverse, products (m * v, v * m, m * m), transpose, matrixCompMult,
 //      outerProduct, of finite doubles (the index picks the shape and the element)
@@ -152,8 +152,11 @@ void main() {
           : which == 2 ? ((i & 1) != 0 ? faceforward(a, b, n)[k] : cross(a, b)[k])
           : ((i & 2) != 0 ? whole : (i & 1) != 0 ? f : mix(x, y, (i & 4) != 0));
     } else {
-        r = which == 0 ? scale * x : which == 1 ? x + offset.y : which == 2 ? (basis * dvec3(x, y, z)).z
-                                                               : dot(corner, dvec4(x, y, z, t));
+        // Only x brings infinities and NaNs here: with y or z among them, a zero basis or corner (GL's value
+        // for a uniform the scene leaves out) would make two NaNs meet in one sum, whose payload is the
+        // order LLVM emits the add in (glsl-builtins.md 0.3; explore conformance --seed 31).
+        r = which == 0 ? scale * x : which == 1 ? x + offset.y : which == 2 ? (basis * dvec3(x, 0.5lf, -2.0lf)).z
+                                                               : dot(corner, dvec4(x, 0.25lf, 3.0lf, -1.5lf));
     }
     uvec2 bits = unpackDouble2x32(r);
     frag_colour = vec4(float(bits.x & 0xFFFFu), float(bits.x >> 16), float(bits.y & 0xFFFFu), float(bits.y >> 16));

@@ -50,12 +50,11 @@ Double pick(Int which, Double r0, Double r1, Double r2, Double r3) {
 
 void BuiltinsDoubleFragment::bind(const Bindings& b) {
     group_ = b.get_int("group");
-    if (group_ != 8 && group_ != 11) return;  // only groups 8 and 11 read them (the other scenes leave them unset)
-    scale_ = b.get_double("scale");
-    if (group_ == 11) return;
-    offset_ = b.get_dvec3("offset");
-    basis_ = b.get_dmat3("basis");
-    corner_ = b.get_dvec4("corner");
+    // Groups 8, 11 and any other past 9 read them; a scene that leaves one unset reads 0, as GL does.
+    scale_ = b.has("scale") ? b.get_double("scale") : 0.0;
+    offset_ = b.has("offset") ? b.get_dvec3("offset") : glm::dvec3(0.0);
+    basis_ = b.has("basis") ? b.get_dmat3("basis") : glm::dmat3(0.0);
+    corner_ = b.has("corner") ? b.get_dvec4("corner") : glm::dvec4(0.0);
 }
 
 Vec4 BuiltinsDoubleFragment::main(const Fragment& frag) const {
@@ -154,10 +153,10 @@ Vec4 BuiltinsDoubleFragment::main(const Fragment& frag) const {
                  select((i & 2) != Int(0), whole, select(odd, f, mix(x, y, (i & 4) != Int(0)))));
     } else {
         // basis * v: the columns scaled and summed left to right (simd/lane_mat.h's order).
-        const DVec3 v(x, y, z);
+        const DVec3 v(x, Double(0.5), Double(-2.0));
         const Double column_sum = (Double(basis_[0].z) * v.x + Double(basis_[1].z) * v.y) + Double(basis_[2].z) * v.z;
         r = pick(which, Double(scale_) * x, x + Double(offset_.y), column_sum,
-                 dot(DVec4(Double(corner_.x), Double(corner_.y), Double(corner_.z), Double(corner_.w)), DVec4(x, y, z, t)));
+                 dot(DVec4(corner_), DVec4(x, Double(0.25), Double(3.0), Double(-1.5))));
     }
     const UVec2 bits = unpackDouble2x32(r);
     return Vec4(float_of(bits.x & UInt(0xFFFFu)), float_of(bits.x >> 16), float_of(bits.y & UInt(0xFFFFu)),
