@@ -53,7 +53,11 @@ void print_human(const SceneComparison& c) {
               << "  coverage_mismatch " << c.coverage_mismatch << "  identical_8bit "
               << c.metrics.identical_fraction_8bit << "  max_diff_8bit " << c.metrics.max_diff_8bit
               << "  identical_float " << c.metrics.identical_fraction_float << "  max_rel_diff_float "
-              << c.metrics.max_rel_diff_float << "\n";
+              << c.metrics.max_rel_diff_float;
+    // NaN against NaN of other bits: shown whenever there are some, so that
+    // criteria.nonfinite "nan_any_payload" never hides them.
+    if (c.metrics.nan_payload_only) std::cout << "  nan_payload_only " << c.metrics.nan_payload_only;
+    std::cout << "\n";
     for (const auto& f : c.failures) std::cout << "    " << f << "\n";
     for (const auto& o : c.outputs) {
         std::cout << "  " << std::left << std::setw(26) << o.name << (o.failures.empty() ? " pass" : " FAIL")

@@ -153,7 +153,8 @@ nlohmann::json metrics_json(const CompareMetrics& m) {
             {"rms_error", m.rms_error},
             {"psnr", m.psnr},
             {"nonfinite", m.nonfinite_a + m.nonfinite_b},
-            {"nonfinite_mismatch", m.nonfinite_mismatch}};
+            {"nonfinite_mismatch", m.nonfinite_mismatch},
+            {"nan_payload_only", m.nan_payload_only}};
 }
 
 void add_junit_cases(JunitReport& junit, const Scene& scene, const SceneComparison& c, const std::string& out_dir,

@@ -31,29 +31,36 @@ CompareMetrics compare_images(const Image& a, const Image& b) {
     m.width = a.width;
     m.height = a.height;
     const size_t pixels = size_t(a.width) * a.height;
-    size_t same8 = 0, same_float = 0;
+    size_t same8 = 0, same_float = 0, same_float_any_nan = 0;
     for (size_t p = 0; p < pixels; ++p) {
-        bool pixel_same8 = true, pixel_same_float = true;
+        bool pixel_same8 = true, pixel_same_float = true, pixel_same_any_nan = true;
         for (int c = 0; c < 4; ++c) {
             const float va = a.rgba[p * 4 + c], vb = b.rgba[p * 4 + c];
             if (!std::isfinite(va)) ++m.nonfinite_a;
             if (!std::isfinite(vb)) ++m.nonfinite_b;
             const bool same_bits = std::bit_cast<uint32_t>(va) == std::bit_cast<uint32_t>(vb);
+            const bool both_nan = std::isnan(va) && std::isnan(vb);
             if (!same_bits && !(std::isfinite(va) && std::isfinite(vb))) ++m.nonfinite_mismatch;
+            if (!same_bits && both_nan) ++m.nan_payload_only;
             const int d8 = diff_8bit(va, vb);
             m.max_diff_8bit = std::max(m.max_diff_8bit, d8);
             pixel_same8 &= d8 == 0;
             pixel_same_float &= same_bits;
+            pixel_same_any_nan &= same_bits || both_nan;
             if (same_bits) continue;  // no difference, even for inf and NaN
             const double rel = std::abs(double(va) - double(vb)) / std::max(std::abs(double(vb)), 1e-3);
             // A NaN on either side makes the relative difference infinite.
-            m.max_rel_diff_float = std::max(m.max_rel_diff_float, std::isnan(rel) ? INFINITY : rel);
+            const double r = std::isnan(rel) ? INFINITY : rel;
+            m.max_rel_diff_float = std::max(m.max_rel_diff_float, r);
+            if (!both_nan) m.max_rel_diff_float_any_nan = std::max(m.max_rel_diff_float_any_nan, r);
         }
         same8 += pixel_same8;
         same_float += pixel_same_float;
+        same_float_any_nan += pixel_same_any_nan;
     }
     m.identical_fraction_8bit = pixels ? double(same8) / pixels : 1.0;
     m.identical_fraction_float = pixels ? double(same_float) / pixels : 1.0;
+    m.identical_fraction_float_any_nan = pixels ? double(same_float_any_nan) / pixels : 1.0;
 
     const ImageErrorStats r = error_stats(a.rgba.data(), b.rgba.data(), a.width, a.height);
     m.max_abs_diff = r.max_error;

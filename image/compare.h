@@ -18,6 +18,14 @@ struct CompareMetrics {
     double max_abs_diff = 0, mean_abs_diff = 0, rms_error = 0, psnr = 0;
     long nonfinite_a = 0, nonfinite_b = 0;  // NaN or infinite channels
     long nonfinite_mismatch = 0;            // non-finite on a side, bits differ
+    // Channels NaN on both sides whose bits differ (payload or sign): where
+    // two NaNs meet in one operation, which one comes out is the operand
+    // order the compiler emitted (docs/llvmpipe/glsl-builtins.md 0.3).
+    long nan_payload_only = 0;
+    // identical_fraction_float and max_rel_diff_float with a NaN matching
+    // any NaN (for criteria.nonfinite "nan_any_payload").
+    double identical_fraction_float_any_nan = 0;
+    double max_rel_diff_float_any_nan = 0;
 };
 
 // `b` is the reference (GL) in max_rel_diff_float. Sizes must match

@@ -14,7 +14,10 @@ Criteria Criteria::read(JsonReader& scene) {
     c.max_rel_diff_float = r->number_or("max_rel_diff_float", c.max_rel_diff_float, 0, 1e30);
     c.min_identical_fraction_8bit = r->number_or("min_identical_fraction_8bit", 0.0, 0.0, 1.0);
     c.min_identical_fraction_float = r->number_or("min_identical_fraction_float", 0.0, 0.0, 1.0);
-    c.nonfinite_if_identical = r->choice_or("nonfinite", "none", {"none", "identical"}) == "identical";
+    const std::string nonfinite = r->choice_or("nonfinite", "none", {"none", "identical", "nan_any_payload"});
+    c.nonfinite = nonfinite == "identical"         ? Nonfinite::Identical
+                  : nonfinite == "nan_any_payload" ? Nonfinite::AnyNanPayload
+                                                   : Nonfinite::None;
     c.condition_map = r->boolean_or("condition_map", false);
     c.min_within_1lsb_fraction = r->number_or("min_within_1lsb_fraction", c.min_within_1lsb_fraction, 0.0, 1.0);
     c.rationale = r->string_or("rationale", "");
@@ -48,18 +51,21 @@ std::vector<std::string> Criteria::failures(const CompareMetrics& m, long covera
         s << what << " " << got << " (limit " << limit << ")";
         out.push_back(s.str());
     };
+    // With "nan_any_payload", a NaN against a NaN of other bits is no difference.
+    const bool any_nan = nonfinite == Nonfinite::AnyNanPayload;
+    const double rel = any_nan ? m.max_rel_diff_float_any_nan : m.max_rel_diff_float;
+    const double identical = any_nan ? m.identical_fraction_float_any_nan : m.identical_fraction_float;
     if (coverage > coverage_mismatch) fail("coverage_mismatch", coverage, coverage_mismatch);
     if (m.max_diff_8bit > max_diff_8bit) fail("max_diff_8bit", m.max_diff_8bit, max_diff_8bit);
-    if (!(m.max_rel_diff_float <= max_rel_diff_float))
-        fail("max_rel_diff_float", m.max_rel_diff_float, max_rel_diff_float);
+    if (!(rel <= max_rel_diff_float)) fail("max_rel_diff_float", rel, max_rel_diff_float);
     if (m.identical_fraction_8bit < min_identical_fraction_8bit)
         fail("identical_fraction_8bit", m.identical_fraction_8bit, min_identical_fraction_8bit);
-    if (m.identical_fraction_float < min_identical_fraction_float)
-        fail("identical_fraction_float", m.identical_fraction_float, min_identical_fraction_float);
-    if (nonfinite_if_identical) {
-        if (m.nonfinite_mismatch) fail("non-finite channels that differ", m.nonfinite_mismatch, 0);
-    } else if (m.nonfinite_a || m.nonfinite_b) {
-        fail("non-finite channels", m.nonfinite_a + m.nonfinite_b, 0);
+    if (identical < min_identical_fraction_float) fail("identical_fraction_float", identical, min_identical_fraction_float);
+    if (nonfinite == Nonfinite::None) {
+        if (m.nonfinite_a || m.nonfinite_b) fail("non-finite channels", m.nonfinite_a + m.nonfinite_b, 0);
+    } else {
+        const long differ = m.nonfinite_mismatch - (any_nan ? m.nan_payload_only : 0);
+        if (differ) fail("non-finite channels that differ", differ, 0);
     }
     return out;
 }

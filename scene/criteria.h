@@ -19,9 +19,14 @@ struct Criteria {
     // Conformance scenes ask for 1: every pixel's float bits equal.
     double min_identical_fraction_float = 0.0;
     // "nonfinite": "identical" allows inf and NaN where both backends write
-    // the same bits (a shader that divides by zero on purpose); by default
-    // any non-finite channel fails.
-    bool nonfinite_if_identical = false;
+    // the same bits (a shader that divides by zero on purpose);
+    // "nan_any_payload" also lets a NaN match a NaN of other bits, the
+    // bound where two NaNs meet in one operation (which one comes out is the
+    // operand order LLVM emitted, which a twin cannot know): such channels
+    // are counted (nan_payload_only) and shown white in the heat map. By
+    // default any non-finite channel fails.
+    enum class Nonfinite { None, Identical, AnyNanPayload };
+    Nonfinite nonfinite = Nonfinite::None;
     std::string rationale;  // why these bounds (free text from the scene file)
     // Search scenes (issue 10): the CPU pipeline also renders the scene
     // with each search's ray perturbed by one ULP either way and marks the
