@@ -17,6 +17,19 @@ inline constexpr int32_t kEdges[16] = {0x00000000, INT32_MIN,  0x3F800000,      
                                        0x3F000000, 0x40200000, int32_t(0xC0700000), 0x0DA24260,
                                        int32_t(0xF149F2CA), 0x7F61B1E6, 0x7F800000, int32_t(0xFF800000),
                                        0x7FC00000, 0x00400000, 0x3DCCCCCD,          0x40E00000};
+// The edges with NaN's place taken by -2 (the GLSL's `others`: where two
+// NaNs meet, the payload is the operand order, glsl-builtins.md 0.3).
+inline constexpr int32_t kOthers[16] = {0x00000000, INT32_MIN,  0x3F800000,          int32_t(0xBF800000),
+                                        0x3F000000, 0x40200000, int32_t(0xC0700000), 0x0DA24260,
+                                        int32_t(0xF149F2CA), 0x7F61B1E6, 0x7F800000, int32_t(0xFF800000),
+                                        int32_t(0xC0000000), 0x00400000, 0x3DCCCCCD, 0x40E00000};
+// Blend weights: 0, 1, 0.5, 0.25, 0.1, 0.9, 1e-8, the float below 1, -0.5,
+// 1.5, -0, 2, NaN, inf, 0.3, 0.7.
+inline constexpr int32_t kWeights[16] = {0x00000000, 0x3F800000, 0x3F000000,         0x3E800000, 0x3DCCCCCD, 0x3F666666,
+                                         0x322BCC77, 0x3F7FFFFF, int32_t(0xBF000000), 0x3FC00000, INT32_MIN,  0x40000000,
+                                         0x7FC00000, 0x7F800000, 0x3E99999A,         0x3F333333};
+// ldexp's exponents: past the range both ways.
+inline constexpr int32_t kExponents[16] = {0, 1, -1, 127, -127, 128, -126, 254, -254, 10, -10, 255, -300, 300, 23, -23};
 
 // The pixel's index in a 64-wide image (GLSL: p.y * 64 + p.x).
 inline Int pixel_index(const Fragment& frag) {

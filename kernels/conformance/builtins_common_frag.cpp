@@ -7,18 +7,6 @@
 
 namespace st {
 
-namespace {
-// The edges with NaN's place taken by -2 (why: the GLSL).
-constexpr int32_t kOthers[16] = {0x00000000, INT32_MIN,  0x3F800000,         int32_t(0xBF800000),
-                                 0x3F000000, 0x40200000, int32_t(0xC0700000), 0x0DA24260,
-                                 int32_t(0xF149F2CA), 0x7F61B1E6, 0x7F800000, int32_t(0xFF800000),
-                                 int32_t(0xC0000000), 0x00400000, 0x3DCCCCCD, 0x40E00000};
-constexpr int32_t kWeights[16] = {0x00000000, 0x3F800000, 0x3F000000,         0x3E800000, 0x3DCCCCCD, 0x3F666666,
-                                  0x322BCC77, 0x3F7FFFFF, int32_t(0xBF000000), 0x3FC00000, INT32_MIN,  0x40000000,
-                                  0x7FC00000, 0x7F800000, 0x3E99999A,         0x3F333333};
-constexpr int32_t kExponents[16] = {0, 1, -1, 127, -127, 128, -126, 254, -254, 10, -10, 255, -300, 300, 23, -23};
-}  // namespace
-
 Vec4 BuiltinsCommonFragment::main(const Fragment& frag) const {
     using namespace glsl;
     using namespace builtin_inputs;

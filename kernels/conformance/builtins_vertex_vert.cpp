@@ -13,17 +13,6 @@ namespace st {
 namespace {
 constexpr int position = 0, uv = 2;    // inputs
 constexpr int v_colour = 0, v_uv = 1;  // outputs
-constexpr int kExponents[16] = {0, 1, -1, 127, -127, 128, -126, 254, -254, 10, -10, 255, -300, 300, 23, -23};
-// The edges with NaN's place taken by -2 (the GLSL's `others`).
-constexpr int32_t kOthers[16] = {0x00000000, INT32_MIN,  0x3F800000,          int32_t(0xBF800000),
-                                 0x3F000000, 0x40200000, int32_t(0xC0700000), 0x0DA24260,
-                                 int32_t(0xF149F2CA), 0x7F61B1E6, 0x7F800000, int32_t(0xFF800000),
-                                 int32_t(0xC0000000), 0x00400000, 0x3DCCCCCD, 0x40E00000};
-// Blend weights: 0, 1, 0.5, 0.25, 0.1, 0.9, 1e-8, the float below 1, -0.5,
-// 1.5, -0, 2, NaN, inf, 0.3, 0.7.
-constexpr int32_t kWeights[16] = {0x00000000, 0x3F800000, 0x3F000000, 0x3E800000, 0x3DCCCCCD, 0x3F666666,
-                                  0x322BCC77, 0x3F7FFFFF, int32_t(0xBF000000), 0x3FC00000, INT32_MIN, 0x40000000,
-                                  0x7FC00000, 0x7F800000, 0x3E99999A, 0x3F333333};
 }  // namespace
 
 float BuiltinsVertex::value(int index, int k) {
@@ -41,14 +30,14 @@ void BuiltinsVertex::run(const glm::vec4* attributes, VertexOut& out) const {
     const uint32_t mantissa = uint32_t(in::kMantissas[(index >> 9) & 7]);
     const float x = std::bit_cast<float>((sign_bit << 31) | (exponent << 23) | mantissa);
     const float y = std::bit_cast<float>(in::kEdges[(index ^ (index >> 4) ^ (index >> 8)) & 15]);
-    const float w = std::bit_cast<float>(kOthers[(index ^ (index >> 4) ^ (index >> 8)) & 15]);
-    const float z = std::bit_cast<float>(kOthers[((index >> 2) ^ (index >> 7) ^ 5) & 15]);
+    const float w = std::bit_cast<float>(in::kOthers[(index ^ (index >> 4) ^ (index >> 8)) & 15]);
+    const float z = std::bit_cast<float>(in::kOthers[((index >> 2) ^ (index >> 7) ^ 5) & 15]);
     const int ix = glsl::floatBitsToInt(x);
-    const int e = kExponents[((index >> 1) ^ (index >> 6)) & 15];
+    const int e = in::kExponents[((index >> 1) ^ (index >> 6)) & 15];
     const glm::vec3 a(value(index, 0), value(index, 1), value(index, 2));
     const glm::vec3 b(value(index, 3), value(index, 4), value(index, 5));
-    const float t = std::bit_cast<float>(kWeights[(index ^ (index >> 5)) & 15]);
-    const float u = std::bit_cast<float>(kWeights[((index >> 3) ^ (index >> 9) ^ 9) & 15]);
+    const float t = std::bit_cast<float>(in::kWeights[(index ^ (index >> 5)) & 15]);
+    const float u = std::bit_cast<float>(in::kWeights[((index >> 3) ^ (index >> 9) ^ 9) & 15]);
     uint32_t ua = uint32_t(index) * 2654435761u + 12345u;
     uint32_t ub = (ua ^ (ua >> 15)) * 2246822519u;
     const int kind = index & 15;
