@@ -59,7 +59,7 @@ void BM_TriangleSetup(benchmark::State& state) {
         planes.clear();
         for (size_t i = 0; i + 2 < verts.size(); i += 3) {
             SetupTriangle tri;
-            benchmark::DoNotOptimize(setup_triangle(verts[i], verts[i + 1], verts[i + 2], 3, 512, 512, tri, planes));
+            benchmark::DoNotOptimize(setup_triangle(verts[i], verts[i + 1], verts[i + 2], 3, Interpolations{}, 512, 512, tri, planes));
         }
     }
     state.SetItemsProcessed(int64_t(state.iterations()) * 1000);
@@ -73,7 +73,7 @@ void BM_RasterizeTile(benchmark::State& state) {
     SetupTriangle tri;
     std::vector<Plane> planes;
     setup_triangle({WindowPos{0.3f, 0.2f, 0.5f, 1}, none}, {WindowPos{63.7f, 1.1f, 0.5f, 1}, none},
-                   {WindowPos{2.2f, 63.9f, 0.5f, 1}, none}, 0, 64, 64, tri, planes);
+                   {WindowPos{2.2f, 63.9f, 0.5f, 1}, none}, 0, Interpolations{}, 64, 64, tri, planes);
     std::vector<BlockCoverage> blocks;
     long pixels = 0;
     for (auto _ : state) {
@@ -99,8 +99,8 @@ void BM_RasterizeSmallTriangles(benchmark::State& state) {
             SetupTriangle tri;
             const SetupVertex a{WindowPos{x, y, 0.5f, 1}, none}, b{WindowPos{x + 7, y, 0.5f, 1}, none},
                 c{WindowPos{x + 7, y + 7, 0.5f, 1}, none}, d{WindowPos{x, y + 7, 0.5f, 1}, none};
-            if (setup_triangle(a, b, c, 0, 64, 64, tri, planes)) tris.push_back(tri);
-            if (setup_triangle(a, c, d, 0, 64, 64, tri, planes)) tris.push_back(tri);
+            if (setup_triangle(a, b, c, 0, Interpolations{}, 64, 64, tri, planes)) tris.push_back(tri);
+            if (setup_triangle(a, c, d, 0, Interpolations{}, 64, 64, tri, planes)) tris.push_back(tri);
         }
     std::vector<BlockCoverage> blocks;
     long pixels = 0;
@@ -123,7 +123,7 @@ void BM_InterpolateBlock(benchmark::State& state) {
     LaneGroup groups[2] = {{100, 200, 0, 0xff}, {100, 200, 1, 0xff}};
     for (auto _ : state)
         for (int part = 0; part < kBlockLanes / kLanes; ++part) {
-            interpolate_lanes(planes.data(), 3, ~0u, groups + part, true, lanes);
+            interpolate_lanes(planes.data(), 3, ~0u, Interpolations{}, groups + part, true, lanes);
             benchmark::DoNotOptimize(lanes);
         }
     state.SetItemsProcessed(int64_t(state.iterations()) * kBlockLanes);

@@ -14,6 +14,7 @@
 // straight into setup) and its coordinates; each coordinate is a tag byte
 // choosing raw float bits, a small grid value or a special value.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -92,7 +93,7 @@ void check_triangle(const SetupVertex& a, const SetupVertex& b, const SetupVerte
     ++g_triangles;
     SetupTriangle tri;
     std::vector<Plane> planes;
-    const bool kept = setup_triangle(a, b, c, 1, width, height, tri, planes);
+    const bool kept = setup_triangle(a, b, c, 1, Interpolations{}, width, height, tri, planes);
     // The reference's pixels, in a width x height grid. Only centres within
     // the snapped vertices' box can be covered, so only those are tested.
     std::vector<uint8_t> want(size_t(width) * size_t(height), 0);
@@ -175,9 +176,21 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                            {v[2].window, v[2].out.varyings.data()}, width, height);
             continue;
         }
+        // Slot 1 noperspective, slot 2 flat: every triangle the clipper
+        // makes must end in a vertex carrying c's flat bits (GL's provoking
+        // vertex), whatever the positions, NaN and infinity included.
+        for (int k = 0; k < 3; ++k) {
+            v[k].out.varyings[1] = v[k].out.position;
+            v[k].out.varyings[2] = glm::vec4(std::bit_cast<float>(0x7F800001u + uint32_t(k)));
+        }
+        Interpolations modes{};
+        modes[1] = Interpolation::NoPerspective;
+        modes[2] = Interpolation::Flat;
         clipped.clear();
-        clip_triangle(v[0], v[1], v[2], mask_or, 1, viewport, clipped);
+        clip_triangle(v[0], v[1], v[2], mask_or, 3, modes, viewport, clipped);
         if (clipped.size() % 3) std::abort();
+        for (size_t k = 0; k + 2 < clipped.size(); k += 3)
+            if (std::bit_cast<uint32_t>(clipped[k + 2].out.varyings[2].x) != 0x7F800003u) std::abort();
         for (size_t k = 0; k + 2 < clipped.size(); k += 3)
             check_triangle({clipped[k].window, clipped[k].out.varyings.data()},
                            {clipped[k + 1].window, clipped[k + 1].out.varyings.data()},

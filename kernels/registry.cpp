@@ -28,6 +28,7 @@ void add_builtin_twins(TwinRegistry& r) {
     r.add_vertex("texture_space", [] { return std::make_unique<TextureSpaceVertex>(); });
     r.add_vertex("profile", [] { return std::make_unique<ProfileVertex>(); });
     r.add_vertex("builtins_vertex", [] { return std::make_unique<BuiltinsVertex>(); });
+    r.add_vertex("varyings", [] { return std::make_unique<VaryingsVertex>(); });
 
     r.add_fragment("interp", [] { return std::make_unique<InterpFragment>(); });
     r.add_fragment("coverage", [] { return std::make_unique<CoverageFragment>(); });
@@ -51,6 +52,7 @@ void add_builtin_twins(TwinRegistry& r) {
     r.add_fragment("builtins_matrix", [] { return std::make_unique<BuiltinsMatrixFragment>(); });
     r.add_fragment("compiler_rewrites", [] { return std::make_unique<CompilerRewritesFragment>(); });
     r.add_fragment("vertex_result", [] { return std::make_unique<VertexResultFragment>(); });
+    r.add_fragment("varyings", [] { return std::make_unique<VaryingsFragment>(); });
     r.add_fragment("uniform_block", [] { return std::make_unique<UniformBlockFragment>(); });
     r.add_fragment("probe_demo", [] { return std::make_unique<ProbeDemoFragment>(); });
     r.add_fragment("loop_budget", [] { return std::make_unique<LoopBudgetFragment>(); });

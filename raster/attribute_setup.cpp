@@ -6,7 +6,7 @@
 namespace st {
 
 void setup_attribute_planes(const SetupVertex& v0, const SetupVertex& v1, const SetupVertex& v2,
-                            int varying_count, std::vector<Plane>& planes) {
+                            int varying_count, const Interpolations& interpolation, std::vector<Plane>& planes) {
     // Pixel index (0, 0) is centred at window (0.5, 0.5).
     const float x0_center = v0.pos.x - 0.5f, y0_center = v0.pos.y - 0.5f;
     const float dx01 = v0.pos.x - v1.pos.x, dy01 = v0.pos.y - v1.pos.y;
@@ -27,11 +27,21 @@ void setup_attribute_planes(const SetupVertex& v0, const SetupVertex& v1, const 
     };
     plane(v0.pos.z, v1.pos.z, v2.pos.z);
     plane(v0.pos.inv_w, v1.pos.inv_w, v2.pos.inv_w);
-    // Perspective-correct varyings: premultiplied by 1/w per vertex.
     for (int slot = 0; slot < varying_count; ++slot)
-        for (int c = 0; c < 4; ++c)
-            plane(v0.varyings[slot][c] * v0.pos.inv_w, v1.varyings[slot][c] * v1.pos.inv_w,
-                  v2.varyings[slot][c] * v2.pos.inv_w);
+        for (int c = 0; c < 4; ++c) {
+            const float a0 = v0.varyings[slot][c], a1 = v1.varyings[slot][c], a2 = v2.varyings[slot][c];
+            switch (interpolation[size_t(slot)]) {
+                case Interpolation::Smooth:  // premultiplied by 1/w per vertex
+                    plane(a0 * v0.pos.inv_w, a1 * v1.pos.inv_w, a2 * v2.pos.inv_w);
+                    break;
+                case Interpolation::NoPerspective:
+                    plane(a0, a1, a2);
+                    break;
+                case Interpolation::Flat:  // the provoking vertex's bits, copied
+                    planes.push_back(Plane{a2, 0.0f, 0.0f});
+                    break;
+            }
+        }
 }
 
 }  // namespace st

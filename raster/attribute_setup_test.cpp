@@ -1,13 +1,16 @@
 // attribute_setup_test.cpp: plane equations and perspective-correct
-// interpolation against barycentric interpolation in double precision.
+// interpolation against barycentric interpolation in double precision; the
+// noperspective and flat qualifiers.
 #include "raster/attribute_setup.h"
 
+#include <bit>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
 #include "shading/derivatives.h"
 #include "shading/program.h"
+#include "raster/float_env.h"
 #include "raster/fragment_inputs.h"
 #include "shading/block_layout.h"
 
@@ -21,8 +24,9 @@ struct Vert {
 };
 
 // The perspective-correct value at window point (px, py): screen-space
-// barycentrics weighted by 1/w, renormalised.
-double exact_attribute(const Vert v[3], double px, double py, int c) {
+// barycentrics weighted by 1/w, renormalised (or not weighted, for a
+// noperspective input).
+double exact_attribute(const Vert v[3], double px, double py, int c, bool perspective = true) {
     const double area = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[2].x - v[0].x) * (v[1].y - v[0].y);
     double b[3];
     for (int i = 0; i < 3; ++i) {
@@ -31,8 +35,9 @@ double exact_attribute(const Vert v[3], double px, double py, int c) {
     }
     double num = 0, den = 0;
     for (int i = 0; i < 3; ++i) {
-        num += b[i] * v[i].colour[c] / v[i].w;
-        den += b[i] / v[i].w;
+        const double weight = perspective ? 1.0 / v[i].w : 1.0;
+        num += b[i] * v[i].colour[c] * weight;
+        den += b[i] * weight;
     }
     return num / den;
 }
@@ -44,24 +49,24 @@ struct BlockInputs {
 };
 
 // z, 1/w and colour planes of the triangle, as setup builds them.
-std::vector<Plane> planes_of(const Vert v[3]) {
+std::vector<Plane> planes_of(const Vert v[3], const Interpolations& modes = {}) {
     std::array<glm::vec4, 3> colours = {v[0].colour, v[1].colour, v[2].colour};
     SetupVertex sv[3];
     for (int i = 0; i < 3; ++i)
         sv[i] = {WindowPos{float(v[i].x), float(v[i].y), 0.5f, float(1.0 / v[i].w)}, &colours[size_t(i)]};
     std::vector<Plane> planes;
-    setup_attribute_planes(sv[0], sv[1], sv[2], 1, planes);
+    setup_attribute_planes(sv[0], sv[1], sv[2], 1, modes, planes);
     return planes;
 }
 
-BlockInputs interpolate(const Vert v[3], int bx, int by) {
-    const std::vector<Plane> planes = planes_of(v);
+BlockInputs interpolate(const Vert v[3], int bx, int by, const Interpolations& modes = {}) {
+    const std::vector<Plane> planes = planes_of(v, modes);
     BlockInputs out;
     for (int part = 0; part < kBlockLanes / kLanes; ++part) {
         FragmentLanes lanes;
         LaneGroup groups[kLanes / kGroupLanes];
         for (int g = 0; g < kLanes / kGroupLanes; ++g) groups[g] = {bx, by, part * (kLanes / kGroupLanes) + g, 0xff};
-        interpolate_lanes(planes.data(), 1, ~0u, groups, true, lanes);
+        interpolate_lanes(planes.data(), 1, ~0u, modes, groups, true, lanes);
         for (int lane = 0; lane < kLanes; ++lane) {
             const Vec4& c = lanes.varyings[0];
             const Vec4& f = lanes.frag_coord;
@@ -111,6 +116,49 @@ TEST(Interpolation, PerspectiveCorrect) {
     EXPECT_GT(worst, 0.0);  // float arithmetic, not a copy of the reference
 }
 
+TEST(Interpolation, NoPerspectiveIsLinearOnTheScreen) {
+    const Vert v[3] = {{3.2, 1.7, 0.5, {1, 0, 0.25, 1}}, {60.9, 12.3, 7.0, {0, 1, 0.5, 0}},
+                       {20.1, 55.5, 2.5, {0, 0, 1, 0.5}}};
+    Interpolations modes{};
+    modes[0] = Interpolation::NoPerspective;
+    double worst = 0, worst_perspective = 0;
+    for (int by = 4; by < 40; by += 4)
+        for (int bx = 8; bx < 40; bx += 4) {
+            const BlockInputs q = interpolate(v, bx, by, modes);
+            for (int lane = 0; lane < kBlockLanes; ++lane)
+                for (int c = 0; c < 4; ++c) {
+                    const double x = bx + block_lane_x(lane) + 0.5, y = by + block_lane_y(lane) + 0.5;
+                    const double got = q.colour[size_t(lane)][c];
+                    worst = std::max(worst, std::abs(got - exact_attribute(v, x, y, c, false)));
+                    worst_perspective = std::max(worst_perspective, std::abs(got - exact_attribute(v, x, y, c)));
+                }
+        }
+    // The planes of values within [0, 1], without the product by w: a few
+    // 1e-7 (see PerspectiveCorrect); and far from the perspective answer.
+    EXPECT_LT(worst, 1e-6);
+    EXPECT_GT(worst_perspective, 0.1);
+}
+
+// A flat input is the provoking (last) vertex's bits in every lane, under
+// the flush-to-zero environment the pipeline renders in: signalling NaN,
+// payload, -0 and a denormal (an int varying's bits) untouched.
+TEST(Interpolation, FlatCopiesTheProvokingVertexBits) {
+    const FlushDenormals float_env;
+    const glm::vec4 bits(std::bit_cast<float>(0x7F800001u), std::bit_cast<float>(0xFFC0ABCDu),
+                         std::bit_cast<float>(0x80000000u), std::bit_cast<float>(0x00000001u));
+    Interpolations modes{};
+    modes[0] = Interpolation::Flat;
+    for (bool clockwise : {false, true}) {
+        Vert v[3] = {{3.2, 1.7, 0.5, {1, 2, 3, 4}}, {60.9, 12.3, 7.0, {5, 6, 7, 8}}, {20.1, 55.5, 2.5, bits}};
+        if (clockwise) std::swap(v[0], v[1]);
+        const BlockInputs q = interpolate(v, 16, 16, modes);
+        for (int lane = 0; lane < kBlockLanes; ++lane)
+            for (int c = 0; c < 4; ++c)
+                EXPECT_EQ(std::bit_cast<uint32_t>(q.colour[size_t(lane)][c]), std::bit_cast<uint32_t>(bits[c]))
+                    << "lane " << lane << " component " << c << (clockwise ? " (clockwise)" : "");
+    }
+}
+
 // The derivative of a linear varying across each quad is its slope, in
 // every lane.
 TEST(Interpolation, QuadDerivatives) {
@@ -119,7 +167,7 @@ TEST(Interpolation, QuadDerivatives) {
     FragmentLanes lanes;
     LaneGroup groups[kLanes / kGroupLanes];
     for (int g = 0; g < kLanes / kGroupLanes; ++g) groups[g] = {8, 20, g, 0xff};
-    interpolate_lanes(planes.data(), 1, ~0u, groups, true, lanes);
+    interpolate_lanes(planes.data(), 1, ~0u, Interpolations{}, groups, true, lanes);
     const Float ddx = dFdx(lanes.varyings[0].x), ddy = dFdy(lanes.varyings[0].y);
     for (int lane = 0; lane < kLanes; ++lane) {
         EXPECT_FLOAT_EQ(ddx[lane], 0.25f);

@@ -62,7 +62,7 @@ void Binner::set_up(SetupChunk& chunk, const PreparedDraw& d, int width, int hei
             return;
         }
         SetupTriangle tri;
-        if (!setup_triangle(a, b, c, d.varying_count, width, height, tri, chunk.planes)) return;
+        if (!setup_triangle(a, b, c, d.varying_count, d.interpolation, width, height, tri, chunk.planes)) return;
         tri.draw = chunk.draw;
         const auto index = uint32_t(chunk.triangles.size());
         chunk.triangles.push_back(tri);
@@ -91,7 +91,7 @@ void Binner::set_up(SetupChunk& chunk, const PreparedDraw& d, int width, int hei
         ClipVertex cv[3];
         for (int k = 0; k < 3; ++k) cv[k] = {d.shaded[i[k]], d.window[i[k]]};
         clipped_tris.clear();
-        clip_triangle(cv[0], cv[1], cv[2], mask_or, d.varying_count, viewport, clipped_tris);
+        clip_triangle(cv[0], cv[1], cv[2], mask_or, d.varying_count, d.interpolation, viewport, clipped_tris);
         for (size_t k = 0; k + 2 < clipped_tris.size(); k += 3) {
             SetupVertex sv[3];
             for (int j = 0; j < 3; ++j) {

@@ -34,16 +34,44 @@ glm::vec4 lerp_unfused(const glm::vec4& from, const glm::vec4& to, float t) {
 
 // The new vertex on the segment from `from` towards `to` at parameter t, with
 // Mesa's C viewport transform: ((x * (1/w)) * scale) + translate, unfused.
+// Smooth varyings are interpolated with t, noperspective ones with the
+// window-space parameter of the same point; flat ones are not interpolated
+// (draw_pipe_clip.c, interp): only the fan's provoking vertex carries them,
+// and clip_triangle copies them there.
 ClipVertex make_vertex(const ClipVertex& from, const ClipVertex& to, float t, int varying_count,
-                       const Viewport& vp) {
+                       const Interpolations& interpolation, const Viewport& vp) {
     ClipVertex v;
     v.out.position = lerp_unfused(from.out.position, to.out.position, t);
-    for (int s = 0; s < varying_count; ++s)
-        v.out.varyings[s] = lerp_unfused(from.out.varyings[s], to.out.varyings[s], t);
+    const glm::vec4 &p0 = from.out.position, &p1 = to.out.position, &p = v.out.position;
+    bool have_window_t = false;
+    float window_t = t;
+    for (int s = 0; s < varying_count; ++s) {
+        switch (interpolation[size_t(s)]) {
+            case Interpolation::Smooth:
+                v.out.varyings[s] = lerp_unfused(from.out.varyings[s], to.out.varyings[s], t);
+                break;
+            case Interpolation::NoPerspective:
+                if (!have_window_t) {
+                    // The first of x, y in which the endpoints differ; when
+                    // neither does, the point is degenerate and t serves.
+                    have_window_t = true;
+                    for (int k = 0; k < 2; ++k)
+                        if (p1[k] != p0[k]) {
+                            const float c0 = p0[k] / p0.w, c1 = p1[k] / p1.w, c = p[k] / p.w;
+                            window_t = (c - c0) / (c1 - c0);
+                            break;
+                        }
+                }
+                v.out.varyings[s] = lerp_unfused(from.out.varyings[s], to.out.varyings[s], window_t);
+                break;
+            case Interpolation::Flat:
+                v.out.varyings[s] = from.out.varyings[s];  // never read (see above)
+                break;
+        }
+    }
     const float scale_x = vp.width * 0.5f, trans_x = vp.x0 + vp.width * 0.5f;
     const float scale_y = vp.height * 0.5f, trans_y = vp.y0 + vp.height * 0.5f;
     const float scale_z = (vp.far - vp.near) * 0.5f, trans_z = (vp.far + vp.near) * 0.5f;
-    const glm::vec4& p = v.out.position;
     const float oow = 1.0f / p.w;
     const float x = (p.x * oow) * scale_x, y = (p.y * oow) * scale_y, z = (p.z * oow) * scale_z;
     v.window = WindowPos{x + trans_x, y + trans_y, z + trans_z, oow};
@@ -65,7 +93,8 @@ unsigned clip_mask(const glm::vec4& p) {
 }
 
 void clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, unsigned mask_or,
-                   int varying_count, const Viewport& viewport, std::vector<ClipVertex>& out) {
+                   int varying_count, const Interpolations& interpolation, const Viewport& viewport,
+                   std::vector<ClipVertex>& out) {
     // Polygon vertices live in `pool`; lists hold indices into it.
     std::vector<ClipVertex> pool{a, b, c};
     std::vector<int> in{0, 1, 2}, next;
@@ -93,11 +122,11 @@ void clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c
                 const ClipVertex &p = pool[size_t(prev)], &q = pool[size_t(cur)];
                 ClipVertex v;
                 if (dp < 0.0f) {  // going out
-                    v = (-dp < dp_prev) ? make_vertex(q, p, dp / denom, varying_count, viewport)
-                                        : make_vertex(p, q, -dp_prev / denom, varying_count, viewport);
+                    v = (-dp < dp_prev) ? make_vertex(q, p, dp / denom, varying_count, interpolation, viewport)
+                                        : make_vertex(p, q, -dp_prev / denom, varying_count, interpolation, viewport);
                 } else {          // coming back in
-                    v = (-dp_prev < dp) ? make_vertex(p, q, -dp_prev / denom, varying_count, viewport)
-                                        : make_vertex(q, p, dp / denom, varying_count, viewport);
+                    v = (-dp_prev < dp) ? make_vertex(p, q, -dp_prev / denom, varying_count, interpolation, viewport)
+                                        : make_vertex(q, p, dp / denom, varying_count, interpolation, viewport);
                 }
                 next.push_back(int(pool.size()));
                 pool.push_back(v);
@@ -106,7 +135,14 @@ void clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c
         }
         in.swap(next);
     }
-    // GL's provoking vertex is the last: triangles (i-1, i, 0).
+    if (in.size() < 3) return;
+    // GL's provoking vertex is the last: triangles (i-1, i, 0). The
+    // polygon's first vertex provokes them all, so it gets the flat values
+    // of the original provoking vertex c (pool[2]) when it is another one.
+    if (in[0] != 2)
+        for (int s = 0; s < varying_count; ++s)
+            if (interpolation[size_t(s)] == Interpolation::Flat)
+                pool[size_t(in[0])].out.varyings[s] = pool[2].out.varyings[s];
     for (size_t i = 2; i < in.size(); ++i) {
         out.push_back(pool[size_t(in[i - 1])]);
         out.push_back(pool[size_t(in[i])]);

@@ -31,7 +31,10 @@ unsigned clip_mask(const glm::vec4& clip);
 // appends the resulting triangles to `out` (three ClipVertex each), fanned
 // as llvmpipe fans them for GL's last-vertex provoking convention. Appends
 // nothing when the triangle vanishes or a plane distance is not finite.
+// Each varying slot is carried as `interpolation` says (make_vertex in
+// clipper.cpp); c is the provoking vertex of flat ones.
 void clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, unsigned mask_or,
-                   int varying_count, const Viewport& viewport, std::vector<ClipVertex>& out);
+                   int varying_count, const Interpolations& interpolation, const Viewport& viewport,
+                   std::vector<ClipVertex>& out);
 
 }  // namespace st

@@ -107,6 +107,7 @@ void CpuRenderer::prepare(const Frame& frame) {
             d.fragment->bind(d.bindings);
             d.varying_count = d.vertex->varying_count();
             d.inputs_read = d.fragment->inputs_read();
+            d.interpolation = d.fragment->interpolations();
         }
     }
 }

@@ -43,8 +43,9 @@ ST_INLINE Float per_group(const LaneGroup* groups, int LaneGroup::*field) {
 
 }  // namespace
 
-void interpolate_lanes(const Plane* planes, int varying_count, uint32_t components, const LaneGroup* groups,
-                       bool front_facing, FragmentLanes& out) {
+void interpolate_lanes(const Plane* planes, int varying_count, uint32_t components,
+                       const Interpolations& interpolation, const LaneGroup* groups, bool front_facing,
+                       FragmentLanes& out) {
     const Plane& z_plane = planes[0];
     const Plane& inv_w_plane = planes[1];
     const Plane* varying_planes = planes + 2;
@@ -71,8 +72,14 @@ void interpolate_lanes(const Plane* planes, int varying_count, uint32_t componen
     for (int slot = 0; slot < varying_count; ++slot) {
         const Plane* p = varying_planes + slot * 4;
         static constexpr Float Vec4::*kComponent[4] = {&Vec4::x, &Vec4::y, &Vec4::z, &Vec4::w};
-        for (int c = 0; c < 4; ++c)
-            out.varyings[size_t(slot)].*kComponent[c] = components >> (4 * slot + c) & 1 ? at(p[c], px, py) * w : not_read;
+        const Interpolation mode = interpolation[size_t(slot)];
+        for (int c = 0; c < 4; ++c) {
+            Float& v = out.varyings[size_t(slot)].*kComponent[c];
+            if (!(components >> (4 * slot + c) & 1)) v = not_read;
+            else if (mode == Interpolation::Smooth) v = at(p[c], px, py) * w;
+            else if (mode == Interpolation::NoPerspective) v = at(p[c], px, py);
+            else v = Float(p[c].a0);
+        }
     }
 }
 

@@ -24,8 +24,13 @@ struct LaneGroup {
 
 // groups[0 .. kLanes / 8) fill lanes [8g, 8g + 8). Only the varying
 // components in `components` (FragmentTwin::inputs_read) are interpolated;
-// the others are NaN.
-void interpolate_lanes(const Plane* planes, int varying_count, uint32_t components, const LaneGroup* groups,
-                       bool front_facing, FragmentLanes& out);
+// the others are NaN. A smooth slot's value is its plane times w, a
+// noperspective slot's its plane, a flat slot's the plane's a0 in every
+// lane, bit for bit (llvmpipe's LP_INTERP_CONSTANT: no arithmetic that
+// could quiet a NaN pattern, flush a denormal or turn -0 into +0, since an
+// int varying travels in those bits).
+void interpolate_lanes(const Plane* planes, int varying_count, uint32_t components,
+                       const Interpolations& interpolation, const LaneGroup* groups, bool front_facing,
+                       FragmentLanes& out);
 
 }  // namespace st

@@ -33,6 +33,7 @@ struct PreparedDraw {
     Bindings bindings;
     int varying_count = 0;
     uint32_t inputs_read = ~0u;           // fragment->inputs_read()
+    Interpolations interpolation{};       // fragment->interpolations()
     std::vector<VertexOut> shaded;        // vertex stage output, per vertex
     std::vector<WindowPos> window;        // viewport transform of `shaded`
     std::vector<unsigned> clip_masks;     // outcodes of `shaded`

@@ -32,7 +32,7 @@ std::optional<WindowPos> first_unsnappable_position(const glm::vec4& a, const gl
         return std::nullopt;
     }
     std::vector<ClipVertex> clipped;
-    clip_triangle(v[0], v[1], v[2], mask_or, 0, viewport, clipped);
+    clip_triangle(v[0], v[1], v[2], mask_or, 0, Interpolations{}, viewport, clipped);
     for (const ClipVertex& k : clipped)
         if (unsnappable(k.window)) return k.window;
     return std::nullopt;

@@ -104,7 +104,7 @@ size_t TileShader::shade_groups(const std::vector<PreparedDraw>& draws) {
         for (; n < kGroupsPerCall && i < groups_.size() && groups_[i].triangle == tri; ++n, ++i)
             call[n] = groups_[i].group;
         for (int g = n; g < kGroupsPerCall; ++g) call[g] = LaneGroup{call[n - 1].x, call[n - 1].y, call[n - 1].half, 0};
-        interpolate_lanes(groups_[first].planes, d.varying_count, d.inputs_read, call, tri->front_facing, inputs_);
+        interpolate_lanes(groups_[first].planes, d.varying_count, d.inputs_read, d.interpolation, call, tri->front_facing, inputs_);
         // Grow only: a new ShadedCall is 400 zeroed bytes, and the twin
         // writes every field that is read.
         if (shaded == shaded_.size()) shaded_.emplace_back();

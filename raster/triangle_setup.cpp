@@ -38,8 +38,8 @@ bool snappable(const SetupVertex& v0, const SetupVertex& v1, const SetupVertex& 
 }
 
 bool setup_triangle(const SetupVertex& v0, const SetupVertex& v1, const SetupVertex& v2,
-                    int varying_count, int target_width, int target_height, SetupTriangle& tri,
-                    std::vector<Plane>& planes) {
+                    int varying_count, const Interpolations& interpolation, int target_width,
+                    int target_height, SetupTriangle& tri, std::vector<Plane>& planes) {
     if (!snappable(v0, v1, v2)) return false;
     const SetupVertex* v[3] = {&v0, &v1, &v2};
     int64_t x[3], y[3];
@@ -70,8 +70,8 @@ bool setup_triangle(const SetupVertex& v0, const SetupVertex& v1, const SetupVer
     // v0 and v1 of what it sees as clockwise triangles (lp_setup_tri.c,
     // triangle_both); the planes' reference vertex follows that swap.
     tri.first_plane = uint32_t(planes.size());
-    if (area > 0) setup_attribute_planes(v1, v0, v2, varying_count, planes);
-    else setup_attribute_planes(v0, v1, v2, varying_count, planes);
+    if (area > 0) setup_attribute_planes(v1, v0, v2, varying_count, interpolation, planes);
+    else setup_attribute_planes(v0, v1, v2, varying_count, interpolation, planes);
     return true;
 }
 

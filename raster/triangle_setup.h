@@ -14,6 +14,7 @@
 
 #include "raster/plane.h"
 #include "raster/viewport.h"
+#include "shading/program.h"
 
 namespace st {
 
@@ -45,7 +46,7 @@ bool snappable(const SetupVertex& v0, const SetupVertex& v1, const SetupVertex& 
 // (zero area, or its box misses the target) or is not snappable(). On success appends
 // 2 + 4 * varying_count planes to `planes`.
 bool setup_triangle(const SetupVertex& v0, const SetupVertex& v1, const SetupVertex& v2,
-                    int varying_count, int target_width, int target_height,
-                    SetupTriangle& tri, std::vector<Plane>& planes);
+                    int varying_count, const Interpolations& interpolation, int target_width,
+                    int target_height, SetupTriangle& tri, std::vector<Plane>& planes);
 
 }  // namespace st

@@ -23,7 +23,7 @@ std::vector<std::pair<int, int>> covered(SetupVertex a, SetupVertex b, SetupVert
     SetupTriangle tri;
     std::vector<Plane> planes;
     std::vector<std::pair<int, int>> out;
-    if (!setup_triangle(a, b, c, 0, w, h, tri, planes)) return out;
+    if (!setup_triangle(a, b, c, 0, Interpolations{}, w, h, tri, planes)) return out;
     std::vector<BlockCoverage> blocks;
     rasterize_in_tile(tri, TileRect{0, 0, w, h}, blocks);
     for (const auto& b : blocks)
@@ -51,9 +51,9 @@ TEST(Setup, ZeroAreaIsCulled) {
 TEST(Setup, FacingFollowsWindingInGlWindowCoordinates) {
     SetupTriangle tri;
     std::vector<Plane> planes;
-    ASSERT_TRUE(setup_triangle(at(0, 0), at(8, 0), at(0, 8), 0, 16, 16, tri, planes));
+    ASSERT_TRUE(setup_triangle(at(0, 0), at(8, 0), at(0, 8), 0, Interpolations{}, 16, 16, tri, planes));
     EXPECT_TRUE(tri.front_facing);  // counter-clockwise with y up
-    ASSERT_TRUE(setup_triangle(at(0, 0), at(0, 8), at(8, 0), 0, 16, 16, tri, planes));
+    ASSERT_TRUE(setup_triangle(at(0, 0), at(0, 8), at(8, 0), 0, Interpolations{}, 16, 16, tri, planes));
     EXPECT_FALSE(tri.front_facing);
 }
 
@@ -94,7 +94,7 @@ TEST(FillRule, SharedEdgeCoveredExactlyOnce) {
 TEST(TileRaster, TilesPartitionTheTriangle) {
     SetupTriangle tri;
     std::vector<Plane> planes;
-    ASSERT_TRUE(setup_triangle(at(-30.3f, 3.1f), at(150.7f, 20.2f), at(40.4f, 140.9f), 0, 130, 130, tri, planes));
+    ASSERT_TRUE(setup_triangle(at(-30.3f, 3.1f), at(150.7f, 20.2f), at(40.4f, 140.9f), 0, Interpolations{}, 130, 130, tri, planes));
     std::vector<BlockCoverage> whole, tiled;
     rasterize_in_tile(tri, TileRect{0, 0, 130, 130}, whole);
     for (int ty = 0; ty < 130; ty += kTileSize)

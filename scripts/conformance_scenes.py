@@ -311,3 +311,36 @@ for fmt in ["rgba8", "rgba32f"]:
           "width": 64, "height": 64, "fragment": "sample_cube_grad",
           "uniforms": [{"name": "grad_scale", "float": 6.0}],
           "textures": [env], "triangles": cube_quads(lod_cols=True)})
+
+# Interpolation qualifiers (varyings.vert and .frag): 48 triangles of both
+# windings over and past a 64x64 target, each corner with its own w (so that
+# smooth and noperspective differ) and some pushed through the near or far
+# plane, so that clipping makes new vertices and new provoking vertices.
+def varyings_triangles(n=48, seed=2027):
+    state = [seed]
+    def rnd():  # a fixed LCG, so the scenes never depend on Python's random
+        state[0] = (state[0] * 1103515245 + 12345) % 2**31
+        return state[0] / 2**31
+    tris = []
+    for t in range(n):
+        cx, cy, r = -4 + rnd() * 72, -4 + rnd() * 72, 6 + rnd() * 30
+        pos, col, uvs = [], [], []
+        for k in range(3):
+            pos.append([round(cx + (rnd() - 0.5) * 2 * r, 2), round(cy + (rnd() - 0.5) * 2 * r, 2),
+                        round(rnd(), 3)])
+            col.append([round(rnd() * 4 - 2, 3), round(rnd() * 4 - 2, 3), round(rnd() * 4 - 2, 3), 3 * t + k])
+            push = [0, 0, 0, 2, -2][int(rnd() * 5)]
+            uvs.append([round(0.5 + rnd() * 3, 3), push])
+        tris.append({"positions": pos, "colours": col, "uvs": uvs})
+    return tris
+for show, tag, what in [(0, "flat-int", "a flat ivec4 of bit patterns no arithmetic may touch (signalling and quiet NaNs with payloads, infinities, -0, denormals), its bits written out"),
+                        (1, "flat-float", "a flat vec4 (NaN payloads, infinities, denormals and ordinary values) written as it arrives"),
+                        (2, "noperspective", "a noperspective vec4, linear in window space where the corners' w differ"),
+                        (3, "smooth", "a smooth (perspective-correct) vec4 beside the other qualifiers"),
+                        (4, "mixed", "smooth x, noperspective y, a flat int after an integer add and a flat uint's bits in one pixel")]:
+    write(f"varyings-{tag}", {"kind": "conformance",
+      "description": f"Interpolation qualifiers through clipping (varyings.vert and .frag, show {show}): {what}; 48 triangles of both windings, each corner with its own w, some past the sides and through the near and far planes, so that the clipper makes new vertices and the provoking (last) vertex moves.",
+      "width": 64, "height": 64, "vertex": "varyings", "fragment": "varyings",
+      "uniforms": [{"name": "reach", "float": 1.25}, {"name": "show", "int": show}],
+      "criteria": {"nonfinite": "identical", "rationale": "Flat inputs are the provoking vertex's bits, NaN payloads and denormals included; smooth and noperspective ones follow llvmpipe's clipper and planes operation for operation: every bit must match."},
+      "triangles": varyings_triangles()})

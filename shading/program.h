@@ -39,6 +39,17 @@ class SamplerCube;
 
 inline constexpr int kMaxVaryings = 8;
 
+// GLSL's interpolation qualifier of a fragment input, which decides how the
+// rasterizer carries a varying from the vertices to a fragment (the fragment
+// shader's qualifier is the one that counts, as in GL since 4.30):
+// - Smooth: perspective-correct (the default);
+// - NoPerspective: linear in window space;
+// - Flat: the provoking (last) vertex's value in every fragment, its bits
+//   untouched, which is how int and uint varyings travel: the vertex twin
+//   writes intBitsToFloat(i), the fragment twin reads floatBitsToInt.
+enum class Interpolation : uint8_t { Smooth, NoPerspective, Flat };
+using Interpolations = std::array<Interpolation, kMaxVaryings>;  // [slot]
+
 struct VertexOut {
     glm::vec4 position{0.0f};                       // gl_Position
     std::array<glm::vec4, kMaxVaryings> varyings{};
@@ -153,6 +164,9 @@ public:
     // shader uses, and fills the others with NaN, so that a component read
     // but not declared shows in every comparison.
     virtual uint32_t inputs_read() const { return ~0u; }
+    // Each input slot's interpolation qualifier (all Smooth unless the GLSL
+    // says `flat` or `noperspective`).
+    virtual Interpolations interpolations() const { return {}; }
     // As VertexTwin::unwritten().
     virtual const char* unwritten() const { return nullptr; }
 };

@@ -221,6 +221,31 @@ TEST(SkeletonFiles, UniformBlocksAndNonSquareMatrices) {
     EXPECT_EQ(first["view"], "identity");
 }
 
+// Interpolation qualifiers come from the fragment inputs; int and uint
+// varyings travel as their bits in a flat slot.
+TEST(SkeletonFiles, FlatNoPerspectiveAndIntegerVaryings) {
+    const std::string v = "#version 450\nlayout(location = 0) in vec4 p;\nflat out ivec2 cell;\n"
+                          "noperspective out vec3 screen;\nout uint tag;\nout float fade;\n"
+                          "void main() { gl_Position = p; cell = ivec2(1); screen = p.xyz; tag = 7u; fade = p.w; }\n";
+    const std::string f = "#version 450\nflat in ivec2 cell;\nnoperspective in vec3 screen;\nflat in uint tag;\n"
+                          "centroid in float fade;\nout vec4 c;\nvoid main() { c = vec4(screen, float(cell.x + int(tag)) * fade); }\n";
+    const std::vector<ProjectFile> files =
+        skeleton_files("q", parse_glsl_stage(v, "q.vert"), v, parse_glsl_stage(f, "q.frag"), f);
+    EXPECT_NE(file_of(files, "kernels/q.h").find("st::Interpolations interpolations() const override;"), std::string::npos);
+    const std::string frag = file_of(files, "kernels/q_frag.cpp");
+    EXPECT_NE(frag.find("    q[cell] = st::Interpolation::Flat;  // flat in ivec2 cell\n"
+                        "    q[screen] = st::Interpolation::NoPerspective;  // noperspective in vec3 screen\n"
+                        "    q[tag] = st::Interpolation::Flat;  // flat in uint tag\n    return q;"),
+              std::string::npos) << frag;
+    EXPECT_EQ(frag.find("q[fade]"), std::string::npos);  // centroid: smooth on a single-sampled target
+    EXPECT_NE(frag.find("cell  ->  floatBitsToInt(frag.varying(cell).xy());"), std::string::npos);
+    EXPECT_NE(frag.find("tag  ->  floatBitsToUint(frag.varying(tag).x);"), std::string::npos);
+    EXPECT_NE(frag.find("st::reads(cell, \"xy\") | st::reads(screen, \"xyz\") | st::reads(tag, \"x\")"), std::string::npos);
+    const std::string vert = file_of(files, "kernels/q_vert.cpp");
+    EXPECT_NE(vert.find("cell = v  ->  out.varyings[cell] = glm::vec4(intBitsToFloat(v), ...)"), std::string::npos) << vert;
+    EXPECT_NE(vert.find("tag = v  ->  out.varyings[tag] = glm::vec4(uintBitsToFloat(v), 0, 0, 0)"), std::string::npos);
+}
+
 TEST(SkeletonFiles, RefusesAnInterfaceTwinsCannotHave) {
     const auto refusal = [](const std::string& vert, const std::string& frag) {
         try {
@@ -242,8 +267,13 @@ TEST(SkeletonFiles, RefusesAnInterfaceTwinsCannotHave) {
               "t.frag:4: an arrayed uniform block ('M'): not modelled");
     EXPECT_EQ(refusal(v, "#version 450\nin vec2 uv;\nout vec4 c;\nuniform sampler3D vol;\nvoid main() {}\n").substr(0, 34),
               "t.frag:4: uniform sampler3D vol: s");
-    EXPECT_EQ(refusal("#version 450\nlayout(location = 0) in vec4 p;\nflat out int id;\nvoid main() {}\n", fr).substr(0, 28),
-              "t.vert:3: output int id: var");
+    EXPECT_EQ(refusal("#version 450\nlayout(location = 0) in vec4 p;\nout mat3 basis;\nvoid main() {}\n", fr).substr(0, 37),
+              "t.vert:3: output mat3 basis: varyings");
+    const std::string id_out = "#version 450\nlayout(location = 0) in vec4 p;\nflat out int id;\nvoid main() {}\n";
+    EXPECT_EQ(refusal(id_out, "#version 450\nin int id;\nout vec4 c;\nvoid main() {}\n"),
+              "t.frag:2: input int id: an integer input must be qualified flat (GLSL 4.50, 4.5)");
+    EXPECT_EQ(refusal(id_out, "#version 450\nflat in uint id;\nout vec4 c;\nvoid main() {}\n"),
+              "t.frag:2: input uint id meets output int id");
 }
 
 }  // namespace

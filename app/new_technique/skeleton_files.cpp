@@ -35,6 +35,7 @@ struct Varying {
     std::string fragment_constant;  // the fragment twin's: "v_uv", "fs_in_uv"
     std::string type;
     int slot = 0;
+    std::string interpolation = "smooth";  // the fragment input's: smooth, noperspective or flat
 };
 
 struct Interface {
@@ -54,6 +55,21 @@ int components(const std::string& type) {
     if (type == "vec3") return 3;
     if (type == "vec4") return 4;
     return 0;
+}
+
+// A varying's type: how many components, and of what ('f' float, 'i' int,
+// 'u' uint; ints travel in their float slot's bits, flat). 0 components:
+// not a type a varying slot carries.
+struct VaryingType {
+    int components = 0;
+    char kind = 'f';
+};
+VaryingType varying_type(const std::string& type) {
+    if (const int c = components(type)) return {c, 'f'};
+    if (type == "int" || type == "uint") return {1, type[0]};
+    if (type.size() == 5 && (type.rfind("ivec", 0) == 0 || type.rfind("uvec", 0) == 0) && type[4] >= '2' && type[4] <= '4')
+        return {type[4] - '0', type[0]};
+    return {0, 'f'};
 }
 
 const char* swizzle(int n) { return n == 1 ? "x" : n == 2 ? "xy" : n == 3 ? "xyz" : "xyzw"; }
@@ -156,9 +172,9 @@ Interface interface_of(const GlslStage& vert, const GlslStage& frag) {
         if (v.location >= 0) taken.insert(v.location);
     int next = 0;
     for (const GlslVariable& v : outs) {
-        if (!components(v.type) || v.array_size)
-            refuse(vert, v.line, "output " + v.type + " " + v.name + ": varyings are float, vec2, vec3 or vec4 (the "
-                                 "pipeline interpolates floats)");
+        if (!varying_type(v.type).components || v.array_size)
+            refuse(vert, v.line, "output " + v.type + " " + v.name + ": varyings are float, int and uint and their vectors "
+                                 "(one slot each; arrays, structs, doubles and matrices are not modelled)");
         Varying y;
         y.vertex_name = v.name, y.constant = constant_name(v.name), y.type = v.type;
         if (v.location >= 0) {
@@ -182,8 +198,14 @@ Interface interface_of(const GlslStage& vert, const GlslStage& frag) {
             if (by_location || by_name) match = &y;
         }
         if (!match) refuse(frag, v.line, "input '" + v.name + "' has no vertex output of its " + (v.location >= 0 ? "location" : "name"));
-        if (components(v.type) != components(match->type))
+        if (v.type != match->type)
             refuse(frag, v.line, "input " + v.type + " " + v.name + " meets output " + match->type + " " + match->vertex_name);
+        // The fragment input's qualifier decides (GLSL 4.50, 4.5); centroid
+        // and sample change nothing on a single-sampled target.
+        for (const std::string& q : v.qualifiers)
+            if (q == "flat" || q == "noperspective" || q == "smooth") match->interpolation = q;
+        if (varying_type(v.type).kind != 'f' && match->interpolation != "flat")
+            refuse(frag, v.line, "input " + v.type + " " + v.name + ": an integer input must be qualified flat (GLSL 4.50, 4.5)");
         match->fragment_name = v.name;
         match->fragment_constant = constant_name(v.name);
     }
@@ -345,7 +367,12 @@ std::string header_file(const Names& n, const Interface& in) {
     o << "};\n\nclass " << n.fragment_class << " final : public st::FragmentProgram<" << n.fragment_class << "> {\npublic:\n";
     if (!in.fragment_uniforms.empty()) o << "    void bind(const st::Bindings& b) override;\n";
     o << "    // The varying components main() reads: only these are interpolated.\n"
-      << "    uint32_t inputs_read() const override;\n    st::Vec4 main(const st::Fragment& frag) const;\n"
+      << "    uint32_t inputs_read() const override;\n";
+    if (std::any_of(in.varyings.begin(), in.varyings.end(),
+                    [](const Varying& y) { return !y.fragment_name.empty() && y.interpolation != "smooth"; }))
+        o << "    // The inputs' interpolation qualifiers (flat, noperspective).\n"
+          << "    st::Interpolations interpolations() const override;\n";
+    o << "    st::Vec4 main(const st::Fragment& frag) const;\n"
       << "    // Delete once main() is written: until then `compare` fails, saying so.\n"
       << "    const char* unwritten() const override {\n        return \"write main() in kernels/" << n.name
       << "_frag.cpp from the GLSL in its comments, then delete unwritten() in kernels/" << n.name << ".h\";\n    }\n";
@@ -391,8 +418,14 @@ std::string vertex_file(const Names& n, const Interface& in, const GlslStage& ve
     for (const Attribute& a : in.attributes)
         o << "    //   " << a.name << "  ->  " << (a.type == "vec4" ? "attributes[" + a.name + "]" : a.type == "float" ? "attributes[" + a.name + "].x" : "glm::" + a.type + "(attributes[" + a.name + "])") << "\n";
     o << "    //   gl_Position  ->  out.position\n";
-    for (const Varying& y : in.varyings)
-        o << "    //   " << y.vertex_name << " = v  ->  out.varyings[" << y.constant << "] = " << (y.type == "vec4" ? "v" : y.type == "float" ? "glm::vec4(v, 0, 0, 0)" : "glm::vec4(v, ...)") << "\n";
+    for (const Varying& y : in.varyings) {
+        const VaryingType t = varying_type(y.type);
+        // An int's bits travel in the float slot (flat keeps them).
+        const std::string v = t.kind == 'i' ? "intBitsToFloat(v)" : t.kind == 'u' ? "uintBitsToFloat(v)" : "v";
+        o << "    //   " << y.vertex_name << " = v  ->  out.varyings[" << y.constant << "] = "
+          << (t.components == 4 ? (t.kind == 'f' ? v : "glm::vec4(" + v + ")")
+              : t.components == 1 ? "glm::vec4(" + v + ", 0, 0, 0)" : "glm::vec4(" + v + ", ...)") << "\n";
+    }
     o << "    //   uniforms: their members (light_dir -> light_dir_); glsl::mul(m, v) for m * v on glm\n"
       << "    // GLSL main(), to write here:\n    //\n" << as_comment(function_text(*vert.function("main")), "    ")
       << "    out.position = " << (in.attributes.empty() ? "glm::vec4(0.0f)" : "attributes[" + in.attributes.front().name + "]")
@@ -416,13 +449,26 @@ std::string fragment_file(const Names& n, const Interface& in, const GlslStage& 
     o << "\n// Every component of every input; narrow it to what main() reads.\nuint32_t " << n.fragment_class << "::inputs_read() const { return ";
     if (read.empty()) o << "0";
     for (size_t i = 0; i < read.size(); ++i)
-        o << (i ? " | " : "") << "st::reads(" << read[i]->fragment_constant << ", \"" << swizzle(components(read[i]->type)) << "\")";
-    o << "; }\n\nst::Vec4 " << n.fragment_class << "::main(const st::Fragment& frag) const {\n"
+        o << (i ? " | " : "") << "st::reads(" << read[i]->fragment_constant << ", \"" << swizzle(varying_type(read[i]->type).components) << "\")";
+    o << "; }\n";
+    if (std::any_of(read.begin(), read.end(), [](const Varying* y) { return y->interpolation != "smooth"; })) {
+        o << "\n// Each input's interpolation qualifier, as the GLSL declares it (smooth unless named).\nst::Interpolations "
+          << n.fragment_class << "::interpolations() const {\n    st::Interpolations q{};\n";
+        for (const Varying* y : read)
+            if (y->interpolation != "smooth")
+                o << "    q[" << y->fragment_constant << "] = st::Interpolation::" << (y->interpolation == "flat" ? "Flat" : "NoPerspective")
+                  << ";  // " << y->interpolation << " in " << y->type << " " << y->fragment_name << "\n";
+        o << "    return q;\n}\n";
+    }
+    o << "\nst::Vec4 " << n.fragment_class << "::main(const st::Fragment& frag) const {\n"
       << "    using namespace st;\n    using namespace st::glsl;\n"
       << "    // The GLSL's names, as the twin reads them:\n";
     for (const Varying* y : read) {
-        const int c = components(y->type);
-        o << "    //   " << y->fragment_name << "  ->  frag.varying(" << y->fragment_constant << ")" << (c == 4 ? "" : c == 1 ? ".x" : std::string(".") + swizzle(c) + "()") << ";\n";
+        const VaryingType t = varying_type(y->type);
+        const int c = t.components;
+        const std::string value = "frag.varying(" + y->fragment_constant + ")" + (c == 4 ? "" : c == 1 ? ".x" : std::string(".") + swizzle(c) + "()");
+        o << "    //   " << y->fragment_name << "  ->  "
+          << (t.kind == 'i' ? "floatBitsToInt(" + value + ")" : t.kind == 'u' ? "floatBitsToUint(" + value + ")" : value) << ";\n";
     }
     for (const GlslVariable& u : in.fragment_uniforms) {
         const std::string at = u.array_size ? "[i]" : "";

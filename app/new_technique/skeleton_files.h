@@ -12,9 +12,11 @@
 // attribute N of each vertex (so every input needs its location), varying
 // N is slot N (a varying without a location takes the next free slot, and
 // a fragment input finds its vertex output by location or by name), and
-// the fragment stage writes one vec4. Anything outside that (a uniform
-// block, an integer varying, several outputs) is refused with the file,
-// the line and what to change.
+// the fragment stage writes one vec4. Varyings are float, int and uint
+// scalars and vectors; a fragment input's flat or noperspective qualifier
+// becomes the twin's interpolations(). Anything outside that (an array
+// varying, several outputs, a buffer block) is refused with the file, the
+// line and what to change.
 #pragma once
 
 #include <string>

@@ -108,6 +108,29 @@ public:
     Vec4 main(const Fragment& frag) const;
 };
 
+// varyings.vert and .frag: an input of each interpolation qualifier,
+// through triangles the view volume clips.
+class VaryingsVertex final : public VertexTwin {  // varyings.vert
+public:
+    int varying_count() const override { return 5; }
+    void bind(const Bindings& b) override { reach_ = b.get_float("reach"); }
+    void run(const glm::vec4* attributes, VertexOut& out) const override;
+
+private:
+    float reach_ = 1.0f;
+};
+
+class VaryingsFragment final : public FragmentProgram<VaryingsFragment> {  // varyings.frag
+public:
+    void bind(const Bindings& b) override { show_ = b.get_int("show"); }
+    uint32_t inputs_read() const override;
+    Interpolations interpolations() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    int show_ = 0;
+};
+
 // A built-in family's program: the uniform `group` picks which functions
 // it writes (one scene each), and its inputs come from the pixel alone.
 template <class Derived> class BuiltinsFragment : public FragmentProgram<Derived> {

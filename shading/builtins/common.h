@@ -292,16 +292,13 @@ ST_INLINE Int floatBitsToInt(Float x) { return lanes::bits_of(x); }
 ST_GLSL_COMPONENTWISE_1(floatBitsToInt)
 ST_INLINE float intBitsToFloat(int32_t i) { return scalar::from_bits(i); }
 ST_INLINE Float intBitsToFloat(Int i) { return lanes::from_bits(i); }
-template <int N> ST_INLINE LaneVec<Float, N> intBitsToFloat(const LaneVec<Int, N>& i) {
-    return [&]<int... I>(std::integer_sequence<int, I...>) {
-        return LaneVec<Float, N>(lanes::from_bits(i.template component<I>())...);
-    }(std::make_integer_sequence<int, N>());
-}
-
+ST_GLSL_COMPONENTWISE_1(intBitsToFloat)
 ST_INLINE uint32_t floatBitsToUint(float x) { return std::bit_cast<uint32_t>(x); }
 ST_INLINE UInt floatBitsToUint(Float x) { return UInt(lanes::bits_of(x)); }
+ST_GLSL_COMPONENTWISE_1(floatBitsToUint)
 ST_INLINE float uintBitsToFloat(uint32_t u) { return std::bit_cast<float>(u); }
 ST_INLINE Float uintBitsToFloat(UInt u) { return lanes::from_bits(simd::int_bits(u)); }
+ST_GLSL_COMPONENTWISE_1(uintBitsToFloat)
 
 // GLSL's fma(a, b, c) is not fused on llvmpipe (lower_ffma32 splits it):
 // a * b rounded, then + c. -ffp-contract=off keeps the compiler from

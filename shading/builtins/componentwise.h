@@ -8,6 +8,8 @@
 // float), step(float, vec3), ...) take that scalar as every component.
 #pragma once
 
+#include <cstdint>
+
 #include <glm/vector_relational.hpp>
 
 #include "simd/lane_vec.h"
@@ -27,6 +29,23 @@ template <int N> struct Traits<LaneVec<Double, N>> {
     template <class R> using With = LaneVec<R, N>;
     template <int I> static ST_INLINE const Double& get(const LaneVec<Double, N>& v) { return v.template component<I>(); }
 };
+// Integer vectors, for the built-ins that take them (the bit casts).
+template <class T, int N> struct LaneTraits {
+    using Scalar = T;
+    static constexpr int size = N;
+    template <class R> using With = LaneVec<R, N>;
+    template <int I> static ST_INLINE const T& get(const LaneVec<T, N>& v) { return v.template component<I>(); }
+};
+template <int N> struct Traits<LaneVec<Int, N>> : LaneTraits<Int, N> {};
+template <int N> struct Traits<LaneVec<UInt, N>> : LaneTraits<UInt, N> {};
+template <class T, int N, glm::qualifier Q> struct GlmTraits {
+    using Scalar = T;
+    static constexpr int size = N;
+    template <class R> using With = glm::vec<N, R, Q>;
+    template <int I> static ST_INLINE const T& get(const glm::vec<N, T, Q>& v) { return v[I]; }
+};
+template <int N, glm::qualifier Q> struct Traits<glm::vec<N, int32_t, Q>> : GlmTraits<int32_t, N, Q> {};
+template <int N, glm::qualifier Q> struct Traits<glm::vec<N, uint32_t, Q>> : GlmTraits<uint32_t, N, Q> {};
 template <int N, glm::qualifier Q> struct Traits<glm::vec<N, double, Q>> {
     using Scalar = double;
     static constexpr int size = N;
