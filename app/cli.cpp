@@ -19,7 +19,7 @@
 #include "app/output_provenance.h"
 #include "app/memory_budget.h"
 #include "app/option_domain.h"
-#include "app/profile_quality.h"
+#include "app/quality/quality_resolver.h"
 #include "scene/input_error.h"
 #include "scene/layer_file.h"
 
@@ -373,7 +373,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
         if (setup) setup();
         st::record_build_provenance();
         if (!gl_given) common.gl_platform = st::gl_platform_from_environment();
-        // A scene's `quality: auto` is resolved by rendering candidates (app/profile_quality.h).
+        // A scene's `quality: auto` is resolved by rendering candidates (app/quality/quality_resolver.h).
         st::install_quality_resolver(common.threads, common.gl_platform);
         if (version) return st::cmd_version(common.gl_platform);
         if (app.got_subcommand("list")) return st::cmd_list();

@@ -29,7 +29,7 @@
 #include "app/backends.h"
 #include "app/commands.h"
 #include "app/profile_exact.h"
-#include "app/profile_quality.h"
+#include "app/quality/profile_quality.h"
 #include "app/progress.h"
 #include "app/short_number.h"
 #include "app/svg_chart.h"

@@ -1,5 +1,5 @@
 // cmd_sweep_quality.cpp: `sweep profile-quality`, the table behind
-// `quality: auto` (app/profile_quality.h): for each diffusion-profile scene,
+// `quality: auto` (app/quality/profile_quality.h): for each diffusion-profile scene,
 // every candidate tried (model, sample count), its error against the Monte
 // Carlo reference and its measured frame time, and the choice. Writes
 // Markdown and a CSV.
@@ -13,7 +13,7 @@
 #include "app/memory_budget.h"
 #include "app/backends.h"
 #include "app/commands.h"
-#include "app/profile_quality.h"
+#include "app/quality/profile_quality.h"
 #include "app/short_number.h"
 #include "image/image_io.h"
 #include "scene/input_error.h"

@@ -3,7 +3,7 @@
 // rendered on the CPU with each search setting (linear steps, binary steps,
 // the secant step, and the count scaled by the view angle), and compared
 // with the same program whose search is replaced by the exact crossing
-// (app/relief_exact.h, reference/relief_intersection.h): the error of the hit
+// (app/quality/relief_exact.h, reference/relief_intersection.h): the error of the hit
 // in texels and in depth (the twin's output_hit mode writes hit_uv and t),
 // and of the final image in 8-bit steps, against the exact image and
 // against a converged search, versus the measured CPU frame time. Settings
@@ -23,7 +23,7 @@
 #include "app/memory_budget.h"
 #include "app/backends.h"
 #include "app/commands.h"
-#include "app/relief_exact.h"
+#include "app/quality/relief_exact.h"
 #include "app/short_number.h"
 #include "app/svg_chart.h"
 #include "image/compare.h"

@@ -26,7 +26,7 @@ std::optional<TabulatedProfiles> load_cached_profiles(const std::string& key);
 void store_cached_profiles(const std::string& key, const TabulatedProfiles& profiles);
 
 // A short text kept the same way under its key (a scene's resolved
-// `quality: auto`, app/profile_quality.h).
+// `quality: auto`, app/quality/profile_quality.h).
 std::optional<std::string> load_cached_record(const std::string& key);
 void store_cached_record(const std::string& key, const std::string& value);
 

@@ -4,7 +4,7 @@
 // settings in a struct whose defaults other code uses too (GatherSettings,
 // ProfileMaterial, ProfileShape, AlbedoMap, ThicknessMap), the declared
 // default is the struct's. `quality` and `quality_budget` are not here:
-// shadertwin's resolver (app/profile_quality.h) takes them out of the scene
+// shadertwin's resolver (app/quality/profile_quality.h) takes them out of the scene
 // before the builder reads it.
 #include "scene/profile_scene.h"
 #include "scene/scene_spaces.h"

@@ -183,7 +183,7 @@ Scene load_scene_document(const std::string& name, nlohmann::json document, cons
     try {
         if (scene.document.contains("quality")) {
             if (!quality_resolver()) throw InputError("field 'quality' needs shadertwin's measuring, not available here");
-            quality_resolver()(name, scene.document);
+            scene.quality = quality_resolver()(name, scene.document);
         }
         JsonReader r(scene.document, "");
         // Files the scene names sit beside it (a document without a file:

@@ -25,6 +25,10 @@ struct Scene {
     std::optional<PaperTiming> paper;  // a published frame rate for this scene's technique
     Frame frame;
     std::string golden_file;  // where `golden` keeps its hashes (scene_sources.h)
+    // What `quality: auto` chose and measured (the resolver's record: the
+    // setting, its error, its frame time, the most accurate one's); null
+    // when the scene did not ask.
+    nlohmann::json quality;
 };
 
 // Throws InputError with one line on any problem: unknown scene, malformed
@@ -43,11 +47,12 @@ Scene load_scene_document(const std::string& name, nlohmann::json document, cons
 void resolve_scene_paths(nlohmann::json& document, const std::string& folder);
 
 // A scene's top-level "quality" field ("auto": the cheapest settings within
-// an image-error budget, app/profile_quality.h) is resolved by measuring,
-// which needs renderers this layer does not know: the app sets a resolver,
-// which rewrites the document (its chosen fields in, "quality" out) before
-// the scene is built. Without one, such a scene is refused.
-using QualityResolver = std::function<void(const std::string& name, nlohmann::json& document)>;
+// an image-error budget, app/quality/quality_resolver.h) is resolved by
+// measuring, which needs renderers this layer does not know: the app sets a
+// resolver, which rewrites the document (its chosen fields in, "quality"
+// out) before the scene is built and returns its record (Scene::quality).
+// Without one, such a scene is refused.
+using QualityResolver = std::function<nlohmann::json(const std::string& name, nlohmann::json& document)>;
 void set_quality_resolver(QualityResolver resolver);
 
 // Every named scene of the tool (scene_sources.h), sorted: the built-in

@@ -511,11 +511,11 @@ PY
     python3 -c 'import json,sys; d = json.load(open(sys.argv[1])); d["geometry"] = {"shape": "mesh", "mesh_file": sys.argv[2]}; d["albedo"] = {"pattern": "freckles", "count": 400, "radius_mm": 1.5, "strength": [0.35, 0.5, 0.6], "seed": 1}; json.dump(d, open(sys.argv[3], "w"))' \
       "$(dirname "$0")/../scenes/profile-parchment-multipole.json" "$work/square.obj" "$work/mesh-albedo.json"
     expect_bad_input "profile: texturing a mesh" "$bin" render "$work/mesh-albedo.json"
-    # quality: auto (app/profile_quality.h).
+    # quality: auto (app/quality/profile_quality.h).
     expect_bad_input "quality: not auto" "$bin" render profile-slab-edge --set quality=fast
     expect_bad_input "quality: a budget of 0 steps" "$bin" render profile-slab-edge --set quality=auto --set quality_budget=0
     expect_bad_input "quality: a non-numeric budget" "$bin" render profile-slab-edge --set quality=auto --set quality_budget=loose
-    expect_bad_input "quality: auto on a relief scene" "$bin" render relief-mapping --set quality=auto
+    expect_bad_input "quality: auto on a scene with nothing to choose" "$bin" render triangles-basic --set quality=auto
     expect_bad_input "quality: auto with a bad material" "$bin" render profile-slab-edge --set quality=auto --set gather.table_size=1
     expect_bad_input "zero resolution" "$bin" render triangles-basic --set width=0
     expect_bad_input "absurd resolution" "$bin" render triangles-basic --set height=100000
@@ -845,6 +845,59 @@ PY
     expect_bad_input "explore --cases 0" "$bin" explore relief --cases 0
     ;;
 
+  relief_quality)
+    # quality: auto on relief scenes (issue 28, app/quality/relief_quality.h):
+    # the cheapest search within the budget of the most accurate setting.
+    # Small frames (CI time); a cache of its own, so every choice is measured.
+    export SHADERTWIN_CACHE="$work/cache"
+    small=(--set width=160 --set height=120)
+    auto() {  # scene, overrides...: the render's JSON line
+      "$bin" render "$1" --backend cpu "${small[@]}" --set quality=auto "${@:2}" --out "$work/auto" 2>"$work/auto.err" | tail -1
+    }
+    q() { python3 -c 'import json,sys; d = json.loads(sys.argv[1]); q = d.get("quality"); print(eval(sys.argv[2]))' "$1" "$2"; }
+    # A flat height field: the cheapest search there is, one linear step
+    # and the secant, exact on a plane.
+    j=$(auto relief-mapping --set 'surface.heights="flat"')
+    [ "$(q "$j" 'q["setting"]')" = "1 / 0 / secant" ] || fail "a flat field: auto chose $(q "$j" 'q["setting"]')"
+    [ "$(q "$j" 'q["within_budget"]')" = "True" ] || fail "a flat field: not within the budget: $j"
+    echo "ok   a flat field: $(q "$j" 'q["setting"]'), $(q "$j" 'q["cpu_ms"]') ms against $(q "$j" 'q["most_accurate_cpu_ms"]') ms"
+    # Walls one texel thin: never the 4 steps that step over them.
+    walls=(--set 'surface.heights="walls"' --set view.angle_deg=60)
+    j=$(auto relief-mapping "${walls[@]}")
+    linear=$(q "$j" 'q["fields"]["linear_steps"]')
+    [ "$linear" -gt 8 ] || fail "one-texel walls: auto chose $(q "$j" 'q["setting"]')"
+    echo "ok   one-texel walls: $(q "$j" 'q["setting"]') (within budget: $(q "$j" 'q["within_budget"]'))"
+    # A grazing view on a deep surface at the default budget: no setting
+    # holds it (the stones' rims); one line says so and the most accurate
+    # setting is used.
+    grazing=(--set view.angle_deg=85 --set view.horizon_distance=6 --set surface.depth=0.3)
+    j=$(auto relief-mapping "${grazing[@]}")
+    [ "$(q "$j" 'q["within_budget"]')" = "False" ] && [ "$(q "$j" 'q["setting"]')" = "512 / 16 / secant" ] ||
+      fail "a grazing view: expected no setting within the budget, got $(q "$j" 'q["setting"]')"
+    [ "$(wc -l <"$work/auto.err")" -eq 1 ] && grep -q "^quality auto: relief-mapping: no setting keeps 99 % of the object within 1 8-bit steps" "$work/auto.err" ||
+      fail "a grazing view: expected one line saying no setting holds: $(cat "$work/auto.err")"
+    echo "ok   a grazing view on a deep surface: none within 1 step, $(q "$j" 'q["setting"]') used"
+    # A looser budget takes a cheaper setting that holds: the walls within
+    # 4 steps, still with many linear steps.
+    j2=$(auto relief-mapping "${walls[@]}" --set quality_budget=4)
+    [ "$(q "$j2" 'q["within_budget"]')" = "True" ] && [ "$(q "$j2" 'q["fields"]["linear_steps"]')" -lt 512 ] &&
+      [ "$(q "$j2" 'q["fields"]["linear_steps"]')" -ge 64 ] || fail "walls within 4 steps: $(q "$j2" 'q["setting"]')"
+    echo "ok   walls within 4 steps: $(q "$j2" 'q["setting"]')"
+    # The choice is its fields: set explicitly, they render the same bits.
+    j=$(auto relief-mapping --set view.angle_deg=30)
+    explicit=$("$bin" render relief-mapping --backend cpu "${small[@]}" --set view.angle_deg=30       --set search.linear_steps="$(q "$j" 'q["fields"]["linear_steps"]')" --set search.binary_steps="$(q "$j" 'q["fields"]["binary_steps"]')"       --set search.secant="$(q "$j" 'str(q["fields"]["secant"]).lower()')"       --set search.min_linear_steps="$(q "$j" 'q["fields"]["min_linear_steps"]')" --out "$work/explicit" | tail -1)
+    [ "$(q "$j" 'd["hash"]')" = "$(q "$explicit" 'd["hash"]')" ] || fail "quality: auto and its setting set by hand render differently"
+    # Cached: the same record again without measuring, and compare (both
+    # pipelines, the choice changes uniforms only) names it.
+    [ "$(q "$(auto relief-mapping --set view.angle_deg=30)" 'q')" = "$(q "$j" 'q')" ] || fail "the cached choice differs"
+    "$bin" compare relief-mapping "${small[@]}" --set view.angle_deg=30 --set quality=auto --out "$work/cmp" >"$work/cmp.txt" ||
+      fail "compare with quality: auto: $(cat "$work/cmp.txt")"
+    grep -q "^  quality auto: $(q "$j" 'q["setting"]') (" "$work/cmp.txt" || fail "compare does not name the choice: $(cat "$work/cmp.txt")"
+    echo "ok   30 degrees: $(q "$j" 'q["setting"]'), the same bits set by hand, cached, compare: $(sed -n 2p "$work/cmp.txt")"
+    # Normal mapping has nothing to choose.
+    [ "$(q "$(auto relief-normal-mapping)" 'q["setting"]')" = "nothing to choose" ] || fail "normal mapping"
+    ;;
+
   relief_failures)
     # Where the methods fail (issue 10), each with its outcome on both
     # pipelines (the twin's side, measured against the exact intersection,
@@ -1020,7 +1073,7 @@ PY
   profile_quality)
     # quality: auto renders the cheapest model and sample count within the
     # budget, found by measuring against the Monte Carlo reference
-    # (app/profile_quality.h); the sweep's table names the same choice, the
+    # (app/quality/profile_quality.h); the sweep's table names the same choice, the
     # candidate before it (fewer samples, or a cheaper model) misses the
     # budget, and a second run takes the choice from the cache.
     export SHADERTWIN_CACHE="$work/cache"

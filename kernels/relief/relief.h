@@ -15,7 +15,7 @@ class Sampler2D;
 class SamplerCube;
 
 // A replacement for the relief search, for measuring only (the relief
-// sweep, app/relief_exact.h): the first crossing of each lane's ray with
+// sweep, app/quality/relief_exact.h): the first crossing of each lane's ray with
 // the height field, on the levels the search's reads would blend. bind()
 // is called from the program's bind, before any fragment.
 class ReliefIntersector {

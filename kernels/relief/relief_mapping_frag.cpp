@@ -1,7 +1,7 @@
 // relief_mapping_frag.cpp: twin of glsl/relief/relief_mapping.frag, line for
 // line, and two CPU-only measuring modes the relief sweep uses (app/
 // cmd_sweep_relief.cpp; GL never sees them): an intersector in place of the
-// search (app/relief_exact.h), and the hit itself as the output (the
+// search (app/quality/relief_exact.h), and the hit itself as the output (the
 // output_hit uniform: hit_uv, t).
 #include "kernels/relief/relief.h"
 

@@ -1,5 +1,5 @@
 // relief_exact.cpp: see relief_exact.h.
-#include "app/relief_exact.h"
+#include "app/quality/relief_exact.h"
 
 #include <algorithm>
 #include <cmath>

@@ -25,15 +25,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gl/gl_platform.h"
+#include "app/quality/image_budget.h"
 
 namespace st {
 
 class Backends;
 
 inline constexpr int kReferenceSamples = 1024;
-inline constexpr double kDefaultQualityBudget = 1.0;  // 8-bit steps
-inline constexpr double kOverBudgetShare = 0.01;
 
 struct QualityCandidate {
     std::string model;
@@ -77,12 +75,15 @@ double reference_reach_mm(const nlohmann::json& material);
 // and no "quality" fields.
 nlohmann::json with_choice(const nlohmann::json& document, const std::string& model, int samples);
 
+// What compare, render and the report show of a choice.
+nlohmann::json profile_choice_record(const QualityChoice& choice);
+
 // Keeps a measured choice in the profile cache, for the resolver below.
 void remember_quality_choice(const nlohmann::json& document, const QualityChoice& choice);
 
-// Makes load_scene resolve `quality: auto` (scene.h): measured once per
-// scene document and budget, then kept in the profile cache
-// (scene/profile_cache.h). Renders with `threads` CPU threads.
-void install_quality_resolver(int threads, GlPlatform gl_platform);
+// `quality: auto` of a profile scene's document: the choice from the profile
+// cache (scene/profile_cache.h) or measured and kept there, written into
+// the document; returns its record.
+nlohmann::json resolve_profile_quality(Backends& backends, const std::string& name, nlohmann::json& document);
 
 }  // namespace st

@@ -1,10 +1,10 @@
-// profile_quality.cpp: `quality: auto` (profile_quality.h).
-#include "app/profile_quality.h"
+// profile_quality.cpp: `quality: auto` for profile scenes (profile_quality.h).
+#include "app/quality/profile_quality.h"
+
+#include "app/quality/image_budget.h"
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
-#include <mutex>
 #include <sstream>
 
 #include "app/median.h"
@@ -43,33 +43,6 @@ void set_model(nlohmann::json& material, const std::string& model) {
     if (model != "multipole") material.erase("max_dipole_pairs");
 }
 
-struct ObjectError {
-    double over_budget = 0, p99 = 0, max = 0;
-};
-
-// Per pixel of the object (either image not black), the worst channel's
-// 8-bit difference.
-ObjectError image_error(const Image& a, const Image& reference, double budget) {
-    std::vector<double> d;
-    for (size_t p = 0; p + 3 < reference.rgba.size(); p += 4) {
-        bool object = false;
-        double worst = 0;
-        for (size_t c = 0; c < 3; ++c) {
-            const uint8_t x = to_unorm8(a.rgba[p + c]), r = to_unorm8(reference.rgba[p + c]);
-            object |= x != 0 || r != 0;
-            worst = std::max(worst, std::abs(double(x) - double(r)));
-        }
-        if (object) d.push_back(worst);
-    }
-    ObjectError e;
-    if (d.empty()) return e;
-    e.over_budget = double(std::count_if(d.begin(), d.end(), [&](double x) { return x > budget; })) / double(d.size());
-    std::sort(d.begin(), d.end());
-    e.p99 = d[std::min(d.size() - 1, size_t(0.99 * double(d.size())))];
-    e.max = d.back();
-    return e;
-}
-
 std::string last_build_line(size_t before) {
     const std::vector<std::string> log = profile_build_log();
     return log.size() > before ? log.back() : std::string("(built before in this process)");
@@ -96,14 +69,7 @@ double quality_budget(const nlohmann::json& document) {
     if (kind == document.end() || !kind->is_string() || kind->get<std::string>() != "profile")
         throw InputError("field 'quality': \"auto\" chooses a profile scene's model and samples; this scene is no "
                          "profile scene");
-    const nlohmann::json& q = document.at("quality");
-    if (!q.is_string() || q.get<std::string>() != "auto")
-        throw InputError("field 'quality' must be \"auto\" (the cheapest model and sample count within the budget)");
-    if (!document.contains("quality_budget")) return kDefaultQualityBudget;
-    const nlohmann::json& b = document.at("quality_budget");
-    if (!b.is_number() || !(b.get<double>() >= 0.5 && b.get<double>() <= 64.0))
-        throw InputError("field 'quality_budget' must be a number of 8-bit steps in [0.5, 64]");
-    return b.get<double>();
+    return read_quality_budget(document, "the cheapest model and sample count");
 }
 
 nlohmann::json with_choice(const nlohmann::json& document, const std::string& model, int samples) {
@@ -171,9 +137,9 @@ QualityChoice measure_quality(Backends& backends, const std::string& name, const
             c.build_source = last_build_line(log_before);
             Image image;
             c.frame_ms = timed(scene.frame, &image);
-            const ObjectError e = image_error(image, reference, choice.budget);
+            const ObjectError e = object_error(image, reference, choice.budget);
             c.over_budget = e.over_budget, c.p99 = e.p99, c.max = e.max;
-            c.within = e.over_budget <= kOverBudgetShare;
+            c.within = e.within();
             choice.tried.push_back(c);
             if (c.within) {
                 best_samples = samples;
@@ -188,44 +154,55 @@ QualityChoice measure_quality(Backends& backends, const std::string& name, const
 
 namespace {
 
-// Everything a choice depends on: the scene as written without its quality
-// fields (nlohmann dumps objects with sorted keys), the budget, this rule's
-// version.
+// v2: the cache holds the whole record.
 std::string choice_key(const nlohmann::json& document) {
-    nlohmann::json base = document;
-    base.erase("quality");
-    base.erase("quality_budget");
-    std::ostringstream key;
-    key.precision(17);
-    key << "quality v1 budget " << quality_budget(document) << ' ' << base.dump();
-    return key.str();
+    return quality_choice_key("quality v2", document, quality_budget(document));
 }
 
 }  // namespace
 
-void remember_quality_choice(const nlohmann::json& document, const QualityChoice& choice) {
-    store_cached_record(choice_key(document), choice.model() + " " + std::to_string(choice.samples()));
+nlohmann::json profile_choice_record(const QualityChoice& choice) {
+    nlohmann::json r = {{"technique", "profile"},
+                        {"budget", choice.budget},
+                        {"reference", "the Monte Carlo profile gathered with " + std::to_string(kReferenceSamples) + " samples"},
+                        {"setting", choice.model() + ", " + std::to_string(choice.samples()) + " samples"},
+                        {"fields", {{"model", choice.model()}, {"samples", choice.samples()}}},
+                        {"within_budget", choice.chosen >= 0},
+                        {"candidates_tried", choice.tried.size()},
+                        {"most_accurate_cpu_ms", choice.reference_ms}};
+    if (choice.chosen >= 0) {
+        const QualityCandidate& c = choice.tried[size_t(choice.chosen)];
+        r["over_budget"] = c.over_budget;
+        r["p99_8bit"] = c.p99;
+        r["max_8bit"] = c.max;
+        r["cpu_ms"] = c.frame_ms;
+    } else {
+        r["cpu_ms"] = choice.reference_ms;
+    }
+    return r;
 }
 
-void install_quality_resolver(int threads, GlPlatform gl_platform) {
-    set_quality_resolver([threads, gl_platform](const std::string& name, nlohmann::json& document) {
-        if (const auto cached = load_cached_record(choice_key(document))) {
-            std::istringstream in(*cached);
-            std::string model;
-            int samples = 0;
-            if (in >> model >> samples && samples > 0 && samples <= kMaxGatherSamples) {
-                document = with_choice(document, model, samples);
-                return;
+void remember_quality_choice(const nlohmann::json& document, const QualityChoice& choice) {
+    store_cached_record(choice_key(document), profile_choice_record(choice).dump());
+}
+
+nlohmann::json resolve_profile_quality(Backends& backends, const std::string& name, nlohmann::json& document) {
+    if (const auto cached = load_cached_record(choice_key(document))) {
+        const nlohmann::json record = nlohmann::json::parse(*cached, nullptr, false);
+        if (record.is_object() && record.contains("fields") && record["fields"].is_object()) {
+            const nlohmann::json& f = record["fields"];
+            if (f.contains("model") && f["model"].is_string() && f.contains("samples") &&
+                f["samples"].is_number_integer() && f["samples"].get<int>() > 0 &&
+                f["samples"].get<int>() <= kMaxGatherSamples) {
+                document = with_choice(document, f["model"].get<std::string>(), f["samples"].get<int>());
+                return record;
             }
         }
-        static std::mutex mutex;
-        static std::unique_ptr<Backends> backends;
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!backends) backends = std::make_unique<Backends>(threads, gl_platform, glsl_roots());
-        const QualityChoice choice = measure_quality(*backends, name, document, 3);
-        remember_quality_choice(document, choice);
-        document = with_choice(document, choice.model(), choice.samples());
-    });
+    }
+    const QualityChoice choice = measure_quality(backends, name, document, 3);
+    remember_quality_choice(document, choice);
+    document = with_choice(document, choice.model(), choice.samples());
+    return profile_choice_record(choice);
 }
 
 }  // namespace st

@@ -1,0 +1,105 @@
+// quality_resolver.cpp: see quality_resolver.h.
+#include "app/quality/quality_resolver.h"
+
+#include <iostream>
+#include <memory>
+#include <mutex>
+#include <optional>
+
+#include "app/backends.h"
+#include "app/commands.h"
+#include "app/quality/profile_quality.h"
+#include "app/quality/relief_exact.h"
+#include "app/quality/relief_quality.h"
+#include "app/short_number.h"
+#include "app/tool_data.h"
+#include "scene/input_error.h"
+#include "scene/profile_cache.h"
+#include "scene/scene.h"
+
+namespace st {
+
+namespace {
+
+std::string relief_key(const nlohmann::json& document) {
+    return quality_choice_key("relief quality v1", document, relief_quality_budget(document));
+}
+
+// The setting a cached relief record names, or nothing when it is not one.
+std::optional<ReliefSetting> cached_setting(const nlohmann::json& record) {
+    if (!record.is_object()) return std::nullopt;
+    if (record.value("setting", std::string()) == "nothing to choose") return ReliefSetting{};
+    if (!record.contains("fields") || !record["fields"].is_object()) return std::nullopt;
+    const nlohmann::json& f = record["fields"];
+    ReliefSetting s;
+    try {
+        s.linear_steps = f.at("linear_steps").get<int>();
+        s.min_linear_steps = f.at("min_linear_steps").get<int>();
+        s.binary_steps = f.at("binary_steps").get<int>();
+        s.secant = f.at("secant").get<bool>();
+        s.planar = f.at("planar").get<bool>();
+        s.max_crossings = f.at("max_crossings").get<int>();
+    } catch (const nlohmann::json::exception&) {
+        return std::nullopt;
+    }
+    return s;
+}
+
+nlohmann::json resolve_relief_quality(int threads, const std::string& name, nlohmann::json& document) {
+    const std::string key = relief_key(document);
+    if (const auto cached = load_cached_record(key)) {
+        const nlohmann::json record = nlohmann::json::parse(*cached, nullptr, false);
+        if (const auto s = cached_setting(record)) {
+            document = with_relief_setting(document, *s);
+            return record;
+        }
+    }
+    static const ReliefSweepTwins twins;
+    const ReliefQualityChoice choice = measure_relief_quality(twins, threads, name, document, 3);
+    const nlohmann::json record = relief_choice_record(choice);
+    store_cached_record(key, record.dump());
+    document = with_relief_setting(document, choice.setting());
+    return record;
+}
+
+// One line when no candidate met the budget (the most accurate setting is
+// used), once per resolution.
+void say_if_over(const std::string& name, const nlohmann::json& record) {
+    if (record.value("within_budget", true)) return;
+    std::cerr << "quality auto: " << name << ": no setting keeps 99 % of the object within "
+              << short_number(record.value("budget", kDefaultQualityBudget)) << " 8-bit steps of "
+              << record.value("reference", std::string("the reference"));
+    if (record.contains("closest") && record["closest"].is_object())
+        std::cerr << " (closest: " << record["closest"].value("setting", std::string()) << ", "
+                  << short_number(100 * record["closest"].value("over_budget", 0.0)) << " % over)";
+    std::cerr << "; using the most accurate, " << record.value("setting", std::string()) << "\n";
+}
+
+}  // namespace
+
+void install_quality_resolver(int threads, GlPlatform gl_platform) {
+    set_quality_resolver([threads, gl_platform](const std::string& name, nlohmann::json& document) {
+        const auto kind = document.find("kind");
+        const std::string k = kind != document.end() && kind->is_string() ? kind->get<std::string>() : "";
+        nlohmann::json record;
+        if (k == "profile") {
+            static std::mutex mutex;
+            static std::unique_ptr<Backends> backends;
+            std::lock_guard<std::mutex> lock(mutex);
+            if (!backends) backends = std::make_unique<Backends>(threads, gl_platform, glsl_roots());
+            record = resolve_profile_quality(*backends, name, document);
+        } else if (k == "relief") {
+            static std::mutex mutex;
+            std::lock_guard<std::mutex> lock(mutex);
+            record = resolve_relief_quality(threads, name, document);
+        } else {
+            throw InputError("field 'quality': \"auto\" chooses a profile or relief scene's settings; a " +
+                             (k.empty() ? std::string("scene without a kind") : k + " scene") +
+                             " has none to choose");
+        }
+        say_if_over(name, record);
+        return record;
+    });
+}
+
+}  // namespace st

@@ -1,0 +1,22 @@
+// quality_resolver.h: `quality: auto` for every technique that has a choice
+// to make ("model no more than a scene needs", issues 11 and 28). A scene
+// with "quality": "auto" (and optionally "quality_budget", 8-bit steps) is
+// resolved before it is built, by its kind:
+// - profile: the diffusion model and gather samples (profile_quality.h);
+// - relief: the search, reflections and light crossings (relief_quality.h).
+// Each choice is measured once per scene document and budget, kept in the
+// profile cache (scene/profile_cache.h) with its record, and the record
+// travels with the scene (Scene::quality) to compare, render and the
+// report. When no candidate meets the budget, the most accurate setting is
+// used and one line on stderr says so.
+#pragma once
+
+#include "gl/gl_platform.h"
+
+namespace st {
+
+// Makes load_scene resolve `quality: auto`, rendering with `threads` CPU
+// threads.
+void install_quality_resolver(int threads, GlPlatform gl_platform);
+
+}  // namespace st

@@ -1,0 +1,228 @@
+// relief_quality.cpp: `quality: auto` for relief scenes (relief_quality.h).
+#include "app/quality/relief_quality.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <tuple>
+
+#include "app/median.h"
+#include "app/quality/relief_exact.h"
+#include "raster/cpu_renderer.h"
+#include "raster/stage_times.h"
+#include "scene/input_error.h"
+#include "scene/scene.h"
+
+namespace st {
+
+namespace {
+
+const std::vector<std::string> kTwoLayerRows = {"two-layer", "occlusion", "absorption"};
+const std::vector<std::string> kOccludingRows = {"occlusion", "absorption"};
+bool is_one_of(const std::string& s, const std::vector<std::string>& set) {
+    return std::find(set.begin(), set.end(), s) != set.end();
+}
+
+// The search candidates: every count of linear and binary steps (with and
+// without the secant step), and for relief mapping the counts scaled by
+// the view angle that `sweep relief` measures.
+constexpr int kLinearSteps[] = {1, 2, 4, 8, 16, 32, 64, 128, 256};
+constexpr int kBinarySteps[] = {0, 1, 2, 4, 6, 8, 12};
+constexpr std::pair<int, int> kScaled[] = {{32, 8}, {64, 8}, {64, 16}, {128, 16}};
+constexpr int kCrossings[] = {1, 2, 4, 8};  // tried fewest first; 16 is the most accurate setting's
+
+// The shader's step count at the scene's view angle (relief_mapping.frag:
+// mix(linear_steps, min_linear_steps, N.V), truncated).
+int steps_at(const ReliefSetting& s, double angle_deg) {
+    if (s.min_linear_steps <= 0) return s.linear_steps;
+    const double cos_view = std::cos(angle_deg * std::numbers::pi / 180.0);
+    return int(double(s.linear_steps) + (double(s.min_linear_steps) - double(s.linear_steps)) * cos_view);
+}
+
+double cost_units(const ReliefSetting& s, double angle_deg) { return steps_at(s, angle_deg) + 2.0 * s.binary_steps; }
+
+std::vector<ReliefCandidate> search_candidates(const std::string& technique, double angle_deg) {
+    std::vector<ReliefCandidate> out;
+    for (int linear : kLinearSteps)
+        for (int binary : kBinarySteps)
+            for (bool secant : {true, false}) {
+                ReliefCandidate c;
+                c.setting.linear_steps = linear, c.setting.binary_steps = binary, c.setting.secant = secant;
+                out.push_back(c);
+            }
+    if (technique == "relief")
+        for (auto [hi, lo] : kScaled)
+            for (int binary : {4, 6}) {
+                ReliefCandidate c;
+                c.setting.linear_steps = hi, c.setting.min_linear_steps = lo, c.setting.binary_steps = binary;
+                out.push_back(c);
+            }
+    for (ReliefCandidate& c : out) c.cost = cost_units(c.setting, angle_deg);
+    // Cheapest first; at equal cost the secant step first (it costs
+    // nothing and is more accurate), then fewer binary steps, then a fixed
+    // count before a scaled one: a total order, so the choice is one.
+    std::stable_sort(out.begin(), out.end(), [](const ReliefCandidate& a, const ReliefCandidate& b) {
+        const ReliefSetting &p = a.setting, &q = b.setting;
+        return std::make_tuple(a.cost, !p.secant, p.binary_steps, p.min_linear_steps, p.linear_steps) <
+               std::make_tuple(b.cost, !q.secant, q.binary_steps, q.min_linear_steps, q.linear_steps);
+    });
+    return out;
+}
+
+// Median CPU frame of `frames` runs (prepare and read-back excluded, as the
+// backends time a frame).
+double frame_ms(CpuRenderer& renderer, const Frame& frame, int frames) {
+    renderer.prepare(frame);
+    std::vector<double> ms;
+    for (int f = 0; f < std::max(1, frames); ++f) {
+        const auto t0 = Clock::now();
+        renderer.execute();
+        ms.push_back(ms_between(t0, Clock::now()));
+    }
+    return median(ms);
+}
+
+}  // namespace
+
+std::string ReliefSetting::label() const {
+    std::ostringstream s;
+    if (min_linear_steps > 0) s << "mix(" << linear_steps << "," << min_linear_steps << ")";
+    else s << linear_steps;
+    s << " / " << binary_steps << (secant ? " / secant" : " / -");
+    if (planar) s << ", planar";
+    if (max_crossings != ReliefSetting{}.max_crossings) s << ", " << max_crossings << " crossings";
+    return s.str();
+}
+
+double relief_quality_budget(const nlohmann::json& document) {
+    return read_quality_budget(document, "the cheapest search");
+}
+
+nlohmann::json with_relief_setting(const nlohmann::json& document, const ReliefSetting& s) {
+    nlohmann::json d = document;
+    d.erase("quality");
+    d.erase("quality_budget");
+    const std::string technique = d.value("technique", std::string("relief"));
+    if (technique == "normal-mapping") return d;  // reads no search
+    auto object = [&](const char* key) -> nlohmann::json& {
+        if (!d.contains(key)) d[key] = nlohmann::json::object();
+        if (!d[key].is_object()) throw InputError(std::string("field '") + key + "' must be an object");
+        return d[key];
+    };
+    nlohmann::json& search = object("search");
+    search["linear_steps"] = s.linear_steps;
+    search["binary_steps"] = s.binary_steps;
+    search["secant"] = s.secant;
+    if (technique == "relief") search["min_linear_steps"] = s.min_linear_steps;
+    if (is_one_of(technique, kTwoLayerRows)) object("reflections")["planar"] = s.planar;
+    if (is_one_of(technique, kOccludingRows)) object("liquid")["max_crossings"] = s.max_crossings;
+    return d;
+}
+
+ReliefQualityChoice measure_relief_quality(const TwinLibrary& twins, int threads, const std::string& name,
+                                           const nlohmann::json& document, int frames) {
+    ReliefQualityChoice choice;
+    choice.scene = name;
+    choice.budget = relief_quality_budget(document);
+    choice.technique = document.value("technique", std::string("relief"));
+    if (choice.technique == "normal-mapping") {
+        choice.nothing_to_choose = true;
+        choice.reference = "none: normal mapping has no search";
+        return choice;
+    }
+    double angle = 45.0;
+    if (document.contains("view") && document["view"].is_object() && document["view"].contains("angle_deg") &&
+        document["view"]["angle_deg"].is_number())
+        angle = document["view"]["angle_deg"].get<double>();
+
+    CpuRenderer renderer(threads, twins);
+    const Scene most_accurate = load_scene_document(name, with_relief_setting(document, ReliefSetting{}), "");
+    const Image reference = renderer.render(most_accurate.frame);
+    choice.reference = "the most accurate setting (" + ReliefSetting{}.label() + ")";
+    const auto try_setting = [&](ReliefCandidate c) {
+        const Scene scene = load_scene_document(name, with_relief_setting(document, c.setting), "");
+        c.error = object_error(renderer.render(scene.frame), reference, choice.budget);
+        choice.tried.push_back(c);
+        return c.error.within();
+    };
+    // 1. The search, the other knobs at their most accurate.
+    for (const ReliefCandidate& c : search_candidates(choice.technique, angle))
+        if (try_setting(c)) {
+            choice.chosen = int(choice.tried.size()) - 1;
+            break;
+        }
+    if (choice.chosen >= 0) {
+        // 2. Planar reflections, when the image stays within the budget.
+        if (is_one_of(choice.technique, kTwoLayerRows)) {
+            ReliefCandidate c = choice.tried[size_t(choice.chosen)];
+            c.setting.planar = true;
+            if (try_setting(c)) choice.chosen = int(choice.tried.size()) - 1;
+        }
+        // 3. The fewest light crossings within the budget.
+        if (is_one_of(choice.technique, kOccludingRows))
+            for (int crossings : kCrossings) {
+                ReliefCandidate c = choice.tried[size_t(choice.chosen)];
+                c.setting.max_crossings = crossings;
+                if (try_setting(c)) {
+                    choice.chosen = int(choice.tried.size()) - 1;
+                    break;
+                }
+            }
+    }
+    const Scene chosen = load_scene_document(name, with_relief_setting(document, choice.setting()), "");
+    if (choice.technique == "relief") {
+        // The floor no search passes: both against the exact crossing.
+        Frame exact = most_accurate.frame;
+        for (Pass& pass : exact.passes)
+            for (DrawCall& d : pass.draws)
+                if (d.fragment == "relief_mapping") d.fragment = ReliefSweepTwins::kExactReliefMapping;
+        const Image exact_image = renderer.render(exact);
+        choice.exact_chosen = object_error(renderer.render(chosen.frame), exact_image, choice.budget);
+        choice.exact_most_accurate = object_error(reference, exact_image, choice.budget);
+        choice.have_exact = true;
+    }
+    choice.chosen_ms = frame_ms(renderer, chosen.frame, frames);
+    choice.most_accurate_ms = frame_ms(renderer, most_accurate.frame, frames);
+    return choice;
+}
+
+nlohmann::json relief_choice_record(const ReliefQualityChoice& choice) {
+    nlohmann::json r = {{"technique", "relief"}, {"row", choice.technique}, {"budget", choice.budget},
+                        {"reference", choice.reference}};
+    if (choice.nothing_to_choose) {
+        r["setting"] = "nothing to choose";
+        return r;
+    }
+    const ReliefSetting s = choice.setting();
+    r["setting"] = s.label();
+    r["fields"] = {{"linear_steps", s.linear_steps}, {"min_linear_steps", s.min_linear_steps},
+                   {"binary_steps", s.binary_steps}, {"secant", s.secant},
+                   {"planar", s.planar},             {"max_crossings", s.max_crossings}};
+    r["within_budget"] = choice.chosen >= 0;
+    if (choice.chosen >= 0) {
+        const ObjectError& e = choice.tried[size_t(choice.chosen)].error;
+        r["over_budget"] = e.over_budget;
+        r["p99_8bit"] = e.p99;
+        r["max_8bit"] = e.max;
+    } else if (!choice.tried.empty()) {
+        // How near the budget the search came.
+        const auto closest = std::min_element(choice.tried.begin(), choice.tried.end(), [](const auto& a, const auto& b) {
+            return a.error.over_budget < b.error.over_budget;
+        });
+        r["closest"] = {{"setting", closest->setting.label()}, {"over_budget", closest->error.over_budget},
+                        {"p99_8bit", closest->error.p99}, {"max_8bit", closest->error.max}};
+    }
+    if (choice.have_exact) {
+        const auto error = [](const ObjectError& e) {
+            return nlohmann::json{{"over_budget", e.over_budget}, {"p99_8bit", e.p99}, {"max_8bit", e.max}};
+        };
+        r["vs_exact"] = {{"chosen", error(choice.exact_chosen)}, {"most_accurate", error(choice.exact_most_accurate)}};
+    }
+    r["candidates_tried"] = choice.tried.size();
+    r["cpu_ms"] = choice.chosen_ms;
+    r["most_accurate_cpu_ms"] = choice.most_accurate_ms;
+    return r;
+}
+
+}  // namespace st
