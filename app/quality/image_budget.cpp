@@ -6,7 +6,10 @@
 #include <sstream>
 #include <vector>
 
+#include "app/median.h"
 #include "image/unorm8.h"
+#include "raster/cpu_renderer.h"
+#include "raster/stage_times.h"
 #include "scene/input_error.h"
 
 namespace st {
@@ -43,10 +46,26 @@ double read_quality_budget(const nlohmann::json& document, const std::string& wh
     return b.get<double>();
 }
 
+double median_frame_ms(CpuRenderer& renderer, const Frame& frame, int frames) {
+    renderer.prepare(frame);
+    std::vector<double> ms;
+    for (int f = 0; f < std::max(1, frames); ++f) {
+        const auto t0 = Clock::now();
+        renderer.execute();
+        ms.push_back(ms_between(t0, Clock::now()));
+    }
+    return median(ms);
+}
+
+nlohmann::json without_quality_fields(const nlohmann::json& document) {
+    nlohmann::json d = document;
+    d.erase("quality");
+    d.erase("quality_budget");
+    return d;
+}
+
 std::string quality_choice_key(const std::string& rule, const nlohmann::json& document, double budget) {
-    nlohmann::json base = document;
-    base.erase("quality");
-    base.erase("quality_budget");
+    const nlohmann::json base = without_quality_fields(document);
     std::ostringstream key;
     key.precision(17);
     key << rule << " budget " << budget << ' ' << base.dump();

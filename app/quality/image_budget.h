@@ -3,8 +3,8 @@
 // over the object's pixels (those not black in either image), in 8-bit
 // steps of the worst RGB channel. A candidate is within the budget when at
 // most kOverBudgetShare of those pixels are more than `budget` steps off.
-// Also what every technique's choice shares: reading the budget, and the
-// key a choice is cached under.
+// Also what every technique's choice shares: reading the budget, timing a
+// candidate, and the key a choice is cached under.
 #pragma once
 
 #include <string>
@@ -30,6 +30,15 @@ ObjectError object_error(const Image& candidate, const Image& reference, double 
 // chooses) and "quality_budget" (8-bit steps in [0.5, 64], default 1);
 // InputError naming the field otherwise.
 double read_quality_budget(const nlohmann::json& document, const std::string& what);
+
+// The median CPU frame of `frames` runs of a prepared frame (prepare and
+// read-back excluded, as the backends time a frame).
+class CpuRenderer;
+struct Frame;
+double median_frame_ms(CpuRenderer& renderer, const Frame& frame, int frames);
+
+// The document without "quality" and "quality_budget".
+nlohmann::json without_quality_fields(const nlohmann::json& document);
 
 // The profile cache's key of a choice (scene/profile_cache.h): the rule and
 // its version, the budget, and the scene as written without its quality

@@ -73,9 +73,7 @@ double quality_budget(const nlohmann::json& document) {
 }
 
 nlohmann::json with_choice(const nlohmann::json& document, const std::string& model, int samples) {
-    nlohmann::json d = document;
-    d.erase("quality");
-    d.erase("quality_budget");
+    nlohmann::json d = without_quality_fields(document);
     if (!d.contains("material") || !d["material"].is_object())
         throw InputError("field 'quality': a profile scene's material is needed to choose its model");
     set_model(d["material"], model);

@@ -1,7 +1,9 @@
 // quality_resolver.cpp: see quality_resolver.h.
 #include "app/quality/quality_resolver.h"
 
+#include <functional>
 #include <iostream>
+#include <stdexcept>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -11,6 +13,8 @@
 #include "app/quality/profile_quality.h"
 #include "app/quality/relief_exact.h"
 #include "app/quality/relief_quality.h"
+#include "app/quality/thin_slab_exact.h"
+#include "app/quality/thin_slab_quality.h"
 #include "app/short_number.h"
 #include "app/tool_data.h"
 #include "scene/input_error.h"
@@ -21,9 +25,6 @@ namespace st {
 
 namespace {
 
-std::string relief_key(const nlohmann::json& document) {
-    return quality_choice_key("relief quality v1", document, relief_quality_budget(document));
-}
 
 // The setting a cached relief record names, or nothing when it is not one.
 std::optional<ReliefSetting> cached_setting(const nlohmann::json& record) {
@@ -45,21 +46,45 @@ std::optional<ReliefSetting> cached_setting(const nlohmann::json& record) {
     return s;
 }
 
-nlohmann::json resolve_relief_quality(int threads, const std::string& name, nlohmann::json& document) {
-    const std::string key = relief_key(document);
+// The record cached under `key` when `apply` takes it (writing its choice
+// into the document), else `measure`'s, cached then applied.
+nlohmann::json cached_or_measured(const std::string& key, nlohmann::json& document,
+                                  const std::function<bool(const nlohmann::json&, nlohmann::json&)>& apply,
+                                  const std::function<nlohmann::json()>& measure) {
     if (const auto cached = load_cached_record(key)) {
         const nlohmann::json record = nlohmann::json::parse(*cached, nullptr, false);
-        if (const auto s = cached_setting(record)) {
-            document = with_relief_setting(document, *s);
-            return record;
-        }
+        if (apply(record, document)) return record;
     }
-    static const ReliefSweepTwins twins;
-    const ReliefQualityChoice choice = measure_relief_quality(twins, threads, name, document, 3);
-    const nlohmann::json record = relief_choice_record(choice);
+    const nlohmann::json record = measure();
     store_cached_record(key, record.dump());
-    document = with_relief_setting(document, choice.setting());
+    if (!apply(record, document)) throw std::logic_error("quality auto: a measured record names no setting");
     return record;
+}
+
+nlohmann::json resolve_relief_quality(int threads, const std::string& name, nlohmann::json& document) {
+    static const ReliefSweepTwins twins;
+    return cached_or_measured(
+        quality_choice_key("relief quality v1", document, relief_quality_budget(document)), document,
+        [](const nlohmann::json& record, nlohmann::json& d) {
+            const auto s = cached_setting(record);
+            if (s) d = with_relief_setting(d, *s);
+            return s.has_value();
+        },
+        [&] { return relief_choice_record(measure_relief_quality(twins, threads, name, document, 3)); });
+}
+
+nlohmann::json resolve_thin_slab_quality(int threads, const std::string& name, nlohmann::json& document) {
+    static const ThinSlabExactTwins twins;
+    return cached_or_measured(
+        quality_choice_key("thin-slab quality v1", document, thin_slab_quality_budget(document)), document,
+        [](const nlohmann::json& record, nlohmann::json& d) {
+            if (!record.is_object() || !record.contains("fields") || !record["fields"].is_object() ||
+                !record["fields"].contains("variant") || !record["fields"]["variant"].is_string())
+                return false;
+            d = with_thin_slab_variant(d, record["fields"]["variant"].get<std::string>());
+            return true;
+        },
+        [&] { return thin_slab_choice_record(measure_thin_slab_quality(twins, threads, name, document, 3)); });
 }
 
 // One line when no candidate met the budget (the most accurate setting is
@@ -92,8 +117,12 @@ void install_quality_resolver(int threads, GlPlatform gl_platform) {
             static std::mutex mutex;
             std::lock_guard<std::mutex> lock(mutex);
             record = resolve_relief_quality(threads, name, document);
+        } else if (k == "thin-slab") {
+            static std::mutex mutex;
+            std::lock_guard<std::mutex> lock(mutex);
+            record = resolve_thin_slab_quality(threads, name, document);
         } else {
-            throw InputError("field 'quality': \"auto\" chooses a profile or relief scene's settings; a " +
+            throw InputError("field 'quality': \"auto\" chooses a profile, relief or thin-slab scene's settings; a " +
                              (k.empty() ? std::string("scene without a kind") : k + " scene") +
                              " has none to choose");
         }

@@ -3,7 +3,8 @@
 // with "quality": "auto" (and optionally "quality_budget", 8-bit steps) is
 // resolved before it is built, by its kind:
 // - profile: the diffusion model and gather samples (profile_quality.h);
-// - relief: the search, reflections and light crossings (relief_quality.h).
+// - relief: the search, reflections and light crossings (relief_quality.h);
+// - thin-slab: where Eq. 4-8 are evaluated (thin_slab_quality.h).
 // Each choice is measured once per scene document and budget, kept in the
 // profile cache (scene/profile_cache.h) with its record, and the record
 // travels with the scene (Scene::quality) to compare, render and the

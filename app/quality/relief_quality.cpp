@@ -7,10 +7,8 @@
 #include <sstream>
 #include <tuple>
 
-#include "app/median.h"
 #include "app/quality/relief_exact.h"
 #include "raster/cpu_renderer.h"
-#include "raster/stage_times.h"
 #include "scene/input_error.h"
 #include "scene/scene.h"
 
@@ -70,18 +68,6 @@ std::vector<ReliefCandidate> search_candidates(const std::string& technique, dou
     return out;
 }
 
-// Median CPU frame of `frames` runs (prepare and read-back excluded, as the
-// backends time a frame).
-double frame_ms(CpuRenderer& renderer, const Frame& frame, int frames) {
-    renderer.prepare(frame);
-    std::vector<double> ms;
-    for (int f = 0; f < std::max(1, frames); ++f) {
-        const auto t0 = Clock::now();
-        renderer.execute();
-        ms.push_back(ms_between(t0, Clock::now()));
-    }
-    return median(ms);
-}
 
 }  // namespace
 
@@ -100,9 +86,7 @@ double relief_quality_budget(const nlohmann::json& document) {
 }
 
 nlohmann::json with_relief_setting(const nlohmann::json& document, const ReliefSetting& s) {
-    nlohmann::json d = document;
-    d.erase("quality");
-    d.erase("quality_budget");
+    nlohmann::json d = without_quality_fields(document);
     const std::string technique = d.value("technique", std::string("relief"));
     if (technique == "normal-mapping") return d;  // reads no search
     auto object = [&](const char* key) -> nlohmann::json& {
@@ -182,8 +166,8 @@ ReliefQualityChoice measure_relief_quality(const TwinLibrary& twins, int threads
         choice.exact_most_accurate = object_error(reference, exact_image, choice.budget);
         choice.have_exact = true;
     }
-    choice.chosen_ms = frame_ms(renderer, chosen.frame, frames);
-    choice.most_accurate_ms = frame_ms(renderer, most_accurate.frame, frames);
+    choice.chosen_ms = median_frame_ms(renderer, chosen.frame, frames);
+    choice.most_accurate_ms = median_frame_ms(renderer, most_accurate.frame, frames);
     return choice;
 }
 
