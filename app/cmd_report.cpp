@@ -51,7 +51,7 @@ int cmd_report(const std::vector<std::string>& patterns, const ReportOptions& op
         progress.step(s.name);
         const auto start = std::chrono::steady_clock::now();
         ReportEntry e{s.name, s.kind, compare_scene(s, backends, out_dir, CompareFiles{options.exr, true}),
-                      std::nullopt, s.paper};
+                      std::nullopt, s.paper, s.quality};
         add_junit_cases(junit, s, e.comparison, out_dir,
                         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         if (frames > 0) {

@@ -15,6 +15,7 @@
 #include "app/junit.h"
 #include "app/memory_budget.h"
 #include "app/provenance.h"
+#include "app/quality/quality_resolver.h"
 #include "app/short_number.h"
 #include "app/tool_data.h"
 #include "image/image_io.h"
@@ -47,22 +48,6 @@ void make_dir(const std::string& dir) {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     if (ec) throw std::runtime_error("cannot create folder " + dir + ": " + ec.message());
-}
-
-// A `quality: auto` record (app/quality/quality_resolver.h) in one line.
-std::string quality_line(const nlohmann::json& q) {
-    std::ostringstream o;
-    o << "quality auto: " << q.value("setting", std::string("?"));
-    if (q.contains("over_budget"))
-        o << " (" << short_number(100 * q.value("over_budget", 0.0)) << " % of the object over "
-          << short_number(q.value("budget", 1.0)) << " steps, p99 " << short_number(q.value("p99_8bit", 0.0))
-          << ", max " << short_number(q.value("max_8bit", 0.0)) << ")";
-    else if (!q.value("within_budget", true))
-        o << " (none within the budget: the most accurate)";
-    if (q.contains("cpu_ms"))
-        o << "; CPU " << short_number(q.value("cpu_ms", 0.0)) << " ms, the most accurate "
-          << short_number(q.value("most_accurate_cpu_ms", 0.0)) << " ms when measured";
-    return o.str();
 }
 
 void print_human(const SceneComparison& c) {
@@ -173,7 +158,7 @@ int cmd_compare(const std::vector<std::string>& names, const std::string& out_di
             std::cout << json_text(j) << std::endl;
         } else {
             print_human(c);
-            if (!scene.quality.is_null()) std::cout << "  " << quality_line(scene.quality) << "\n";
+            if (!scene.quality.is_null()) std::cout << "  " << quality_summary(scene.quality) << "\n";
         }
     }
     if (!junit_path.empty()) write_junit(junit_path, junit);

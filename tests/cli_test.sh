@@ -894,6 +894,11 @@ PY
       fail "compare with quality: auto: $(cat "$work/cmp.txt")"
     grep -q "^  quality auto: $(q "$j" 'q["setting"]') (" "$work/cmp.txt" || fail "compare does not name the choice: $(cat "$work/cmp.txt")"
     echo "ok   30 degrees: $(q "$j" 'q["setting"]'), the same bits set by hand, cached, compare: $(sed -n 2p "$work/cmp.txt")"
+    # The report says it too, in the scene's detail.
+    "$bin" report relief-mapping "${small[@]}" --set view.angle_deg=30 --set quality=auto --out "$work/report" --brief >/dev/null ||
+      fail "report with quality: auto"
+    grep -q "<p class=\"quality\">quality auto: $(q "$j" 'q["setting"]') (" "$work/report/index.html" ||
+      fail "the report does not name the choice"
     # Normal mapping has nothing to choose.
     [ "$(q "$(auto relief-normal-mapping)" 'q["setting"]')" = "nothing to choose" ] || fail "normal mapping"
     ;;

@@ -7,6 +7,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <sstream>
 
 #include "app/backends.h"
 #include "app/commands.h"
@@ -129,6 +130,21 @@ void install_quality_resolver(int threads, GlPlatform gl_platform) {
         say_if_over(name, record);
         return record;
     });
+}
+
+std::string quality_summary(const nlohmann::json& q) {
+    std::ostringstream o;
+    o << "quality auto: " << q.value("setting", std::string("?"));
+    if (q.contains("over_budget"))
+        o << " (" << short_number(100 * q.value("over_budget", 0.0)) << " % of the object over "
+          << short_number(q.value("budget", 1.0)) << " steps, p99 " << short_number(q.value("p99_8bit", 0.0))
+          << ", max " << short_number(q.value("max_8bit", 0.0)) << ")";
+    else if (!q.value("within_budget", true))
+        o << " (none within the budget: the most accurate)";
+    if (q.contains("cpu_ms"))
+        o << "; CPU " << short_number(q.value("cpu_ms", 0.0)) << " ms, the most accurate "
+          << short_number(q.value("most_accurate_cpu_ms", 0.0)) << " ms when measured";
+    return o.str();
 }
 
 }  // namespace st

@@ -2,6 +2,8 @@
 // and one inline script (the wipe and flip); no network, no library.
 #include "app/report/report_page.h"
 
+#include "app/quality/quality_resolver.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -172,6 +174,7 @@ std::string report_page(const ReportHeader& header, const std::vector<ReportEntr
           << markup_text(e.scene) << "</b> (" << markup_text(e.kind) << ") <span class=\"" << (c.pass() ? "pass\">pass" : "fail\">FAIL")
           << "</span></summary>\n";
         for (const auto& f : c.failures) h << "<p class=\"fail\">" << markup_text(f) << "</p>";
+        if (!e.quality.is_null()) h << "<p class=\"quality\">" << markup_text(quality_summary(e.quality)) << "</p>";
         viewer(h, c.cpu_png, c.gl_png, w, ht, scale);
         h << "<div class=\"strip\">";
         image_figure(h, c.cpu_png, "CPU (twins)", w, ht, scale);

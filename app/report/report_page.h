@@ -22,6 +22,7 @@ struct ReportEntry {
     SceneComparison comparison;
     std::optional<BenchResult> cost;  // when report timed frames
     std::optional<PaperTiming> paper;  // the paper's frame rate for this scene, if it gave one
+    nlohmann::json quality;            // what `quality: auto` chose (Scene::quality), null if not asked
 };
 
 struct ReportHeader {
