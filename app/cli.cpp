@@ -292,7 +292,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
         "profile: the flat-slab scene measured against its exact image; profile-quality: the one scene (default: "
         "every built-in profile scene)");
     sweep->add_option("--out", out_dir, "output folder (CSV, SVG charts, Markdown)");
-    sweep->add_option("--frames", sweep_frames, "relief, profile: timed rounds per setting (medians)")->check(CLI::Range(1, 1000));
+    sweep->add_option("--frames", sweep_frames, "relief, profile, thin-slab: timed rounds per setting (medians)")->check(CLI::Range(1, 1000));
     add_common(sweep, common, gl_given);
 
     st::ReportOptions report_options;
@@ -415,7 +415,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
                 return st::cmd_sweep_quality(sweep_scene_option->count() ? std::vector<std::string>{sweep_scene}
                                                                          : std::vector<std::string>{},
                                              out_dir, sweep_frames, common);
-            return st::cmd_sweep(technique, out_dir, common);
+            return st::cmd_sweep(technique, out_dir, sweep_frames, common);
         }
         std::cerr << "shadertwin: no command given (try --help)\n";
         return 2;

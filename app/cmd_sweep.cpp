@@ -4,7 +4,8 @@
 // error against a double-precision reference of 1e-3 or more, which a
 // discontinuity or a cancellation shows as), compares with the naive float
 // formulas, and writes a CSV, SVG charts and the single-scattering accuracy
-// table (against the exact slab solution) for docs/thin-slab.md.
+// table (against the exact slab solution) for docs/thin-slab.md; then the
+// variants' speed against accuracy (app/quality/thin_slab_speed.h).
 #include <bit>
 #include <cmath>
 #include <filesystem>
@@ -16,6 +17,7 @@
 #include "app/memory_budget.h"
 #include "app/backends.h"
 #include "app/commands.h"
+#include "app/quality/thin_slab_speed.h"
 #include "app/svg_chart.h"
 #include "image/image_io.h"
 #include "shading/glsl_math.h"
@@ -70,7 +72,7 @@ std::string fmt(double v) {
 
 }  // namespace
 
-int cmd_sweep(const std::string& technique, const std::string& out_dir, const CommonOptions& common) {
+int cmd_sweep(const std::string& technique, const std::string& out_dir, int frames, const CommonOptions& common) {
     if (technique != "thin-slab") throw std::runtime_error("no sweep for '" + technique + "' (known: thin-slab)");
     const Scene scene = load_scene("thin-slab-sweep", common.overrides);
     check_memory({scene}, MemoryUse::Compare, common.max_memory);
@@ -164,6 +166,7 @@ int cmd_sweep(const std::string& technique, const std::string& out_dir, const Co
                << fmt(total_ss / total_ex - 1) << " |\n";
         }
 
+    md << thin_slab_speed_accuracy(out_dir, frames, common);
     write_text_file(out_dir + "/thin-slab-sweep.csv", csv.str());
     const char* names[] = {"thin-slab-sweep-front.svg", "thin-slab-sweep-one-minus-exp.svg", "thin-slab-sweep-mu-mu0.svg",
                            "thin-slab-sweep-grazing-alpha.svg"};

@@ -206,8 +206,27 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
     md << "| setting | CPU ms | interior RMS / max (8-bit) | interior pixels > 1 step | interior rel. RMS (float) | "
           "edge band RMS / max | edge band > 1 step | interior RMS / > 1 step against Monte Carlo |\n"
           "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
+    // What quality: auto takes for this scene (budget 1): marked when the
+    // sweep holds it (the scene's own model, importance sampling, its
+    // texture size), else named.
+    nlohmann::json auto_document = load_scene(scene_name, common.overrides).document;
+    auto_document["quality"] = "auto";
+    const QualityChoice auto_choice = measure_quality(backends, scene_name, auto_document, 1);
+    const nlohmann::json& as_given = scenes.front().document;
+    const std::string scene_model = as_given.contains("material") ? as_given["material"].value("model", std::string()) : "";
+    const ProfileResult* auto_result = nullptr;
+    for (const ProfileResult& r : results)
+        if (auto_choice.model() == scene_model && r.setting.pattern == "importance" &&
+            r.setting.samples == auto_choice.samples() &&
+            r.setting.texture_size == auto_document.value("geometry", nlohmann::json::object()).value("texture_size", 256))
+            auto_result = &r;
+    const std::string auto_line =
+        "`quality: auto` takes " +
+        std::string(auto_choice.chosen < 0 ? "(none within the budget: the reference's settings) " : "") +
+        auto_choice.model() + " with " + std::to_string(auto_choice.samples()) + " samples" +
+        (auto_result ? " (the black dot)" : " (not among these settings, which keep the scene's model)") + ".\n";
     ChartSeries imp{"importance-sampled", "#1f77b4", {}, {}, false, 2.5}, disk{"uniform disk", "#ff7f0e", {}, {}, false, 2.5},
-        front{"undominated", "#d62728", {}, {}, false, 0},
+        front{"undominated", "#d62728", {}, {}, false, 0}, auto_mark{"quality: auto", "#000000", {}, {}, false, 5},
         physics{"importance-sampled, against Monte Carlo", "#2ca02c", {}, {}, false, 2.5};
     std::vector<const ProfileResult*> sorted;
     for (const ProfileResult& r : results) sorted.push_back(&r);
@@ -236,9 +255,10 @@ int cmd_sweep_profile(const std::string& scene_name, const std::string& out_dir,
     chart.x_label = "CPU frame, ms (median)";
     chart.y_label = "interior RMS error, 8-bit steps (floored at 1e-3)";
     chart.log_x = chart.log_y = true;
-    chart.series = {imp, disk, front, physics};
+    if (auto_result) auto_mark.x.push_back(auto_result->median_ms), auto_mark.y.push_back(std::max(auto_result->interior.rms, 1e-3));
+    chart.series = {imp, disk, front, physics, auto_mark};
     write_text_file(out_dir + "/profile-sweep.svg", chart.svg());
-    md << "\n![speed against accuracy](profile-sweep.svg)\n";
+    md << "\n![speed against accuracy](profile-sweep.svg)\n\n" << auto_line;
     write_text_file(out_dir + "/profile-sweep.csv", csv.str());
     write_text_file(out_dir + "/profile-sweep.md", md.str());
     std::cout << md.str();

@@ -24,6 +24,7 @@
 #include "app/backends.h"
 #include "app/commands.h"
 #include "app/quality/relief_exact.h"
+#include "app/quality/relief_quality.h"
 #include "app/short_number.h"
 #include "app/svg_chart.h"
 #include "image/compare.h"
@@ -236,10 +237,24 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
         write_png_bytes(stem + "-converged-heat.png", ref_image.width, ref_image.height, 3, heat.data());
         const ImageError floor = image_error(converged, ref_image, ref_hits);
 
-        std::vector<Result> results(all.size());
-        for (size_t i = 0; i < all.size(); ++i) {
-            results[i].setting = all[i];
-            const Frame f = with_setting(scene.frame, all[i]);
+        // The setting quality: auto takes at this angle (budget 1), among
+        // the sweep's when it is one of them, else measured beside them.
+        nlohmann::json auto_document = scene.document;
+        auto_document["quality"] = "auto";
+        const ReliefQualityChoice auto_choice =
+            measure_relief_quality(sweep_twins, common.threads, scene.name, auto_document, 1);
+        const ReliefSetting chosen = auto_choice.setting();
+        const Setting auto_setting{chosen.linear_steps, chosen.min_linear_steps, chosen.binary_steps, chosen.secant};
+        std::vector<Setting> tried = all;
+        const auto same = [&](const Setting& t) {
+            return t.linear == auto_setting.linear && t.min_linear == auto_setting.min_linear &&
+                   t.binary == auto_setting.binary && t.secant == auto_setting.secant;
+        };
+        if (std::none_of(tried.begin(), tried.end(), same)) tried.push_back(auto_setting);
+        std::vector<Result> results(tried.size());
+        for (size_t i = 0; i < tried.size(); ++i) {
+            results[i].setting = tried[i];
+            const Frame f = with_setting(scene.frame, tried[i]);
             const Rendered first = backends.render(Backend::Cpu, f);
             results[i].ms.push_back(first.ms);
             measure_hits(results[i], backends.render(Backend::Cpu, hit_frame(f)).image, ref_hits, map_size);
@@ -249,8 +264,8 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
         // The remaining rounds time every setting once each, so that the
         // machine's drift falls on all of them alike.
         for (int round = 1; round < frames; ++round)
-            for (size_t i = 0; i < all.size(); ++i)
-                results[i].ms.push_back(backends.render(Backend::Cpu, with_setting(scene.frame, all[i])).ms);
+            for (size_t i = 0; i < tried.size(); ++i)
+                results[i].ms.push_back(backends.render(Backend::Cpu, with_setting(scene.frame, tried[i])).ms);
         for (Result& r : results) r.median_ms = quantile(r.ms, 0.5);
         for (Result& r : results) {
             r.undominated = std::none_of(results.begin(), results.end(), [&](const Result& o) {
@@ -263,6 +278,11 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
         const Result* cheapest = nullptr;
         const Result* cheapest_converged = nullptr;
         for (const Result& r : results) {
+            // (auto's setting joins the sweep's when it is none of them; where
+            // that is the converged search itself, it measures nothing here.)
+            if (r.setting.linear == kConverged.linear && r.setting.binary == kConverged.binary &&
+                r.setting.min_linear == kConverged.min_linear && r.setting.secant == kConverged.secant)
+                continue;
             if (r.image.over_1lsb <= kWithinStep && (!cheapest || r.median_ms < cheapest->median_ms)) cheapest = &r;
             if (r.converged.over_1lsb <= kWithinStep &&
                 (!cheapest_converged || r.median_ms < cheapest_converged->median_ms))
@@ -272,6 +292,13 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
             return r ? "`" + r->setting.label() + "` (" + short_number(r->median_ms) + " ms)" : std::string("none");
         };
         md << "\n## View angle " << short_number(angle) << " degrees\n\n";
+        const Result* auto_result = nullptr;
+        for (const Result& r : results)
+            if (same(r.setting)) auto_result = &r;
+        md << "`quality: auto` takes " << (auto_choice.chosen < 0 ? "(none within the budget: the most accurate) " : "")
+           << named(auto_result)
+           << " (the cheapest within one step for 99 % of the object against the most accurate search, "
+              "app/quality/relief_quality.h). ";
         md << "Cheapest setting whose image keeps 99 % of the pixels within one 8-bit step of the exact image: "
            << named(cheapest) << "; of the converged search's (`" << kConverged.label() << "`, itself "
            << short_number(floor.rms) << " steps RMS and " << short_number(100 * floor.over_1lsb)
@@ -284,7 +311,11 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
         ChartSeries fixed_secant{"linear+binary+secant", "#1f77b4", {}, {}, false, 2.5},
             fixed_plain{"linear+binary", "#ff7f0e", {}, {}, false, 2.5},
             scaled{"scaled by view angle", "#2ca02c", {}, {}, false, 3},
-            front{"undominated", "#d62728", {}, {}, false, 0};
+            front{"undominated", "#d62728", {}, {}, false, 0}, auto_mark{"quality: auto", "#000000", {}, {}, false, 5};
+        if (auto_result) {
+            auto_mark.x.push_back(auto_result->median_ms);
+            auto_mark.y.push_back(std::max(auto_result->image.rms, 1e-3));
+        }
         std::vector<const Result*> sorted;
         for (const Result& r : results) sorted.push_back(&r);
         std::sort(sorted.begin(), sorted.end(), [](const Result* a, const Result* b) { return a->median_ms < b->median_ms; });
@@ -301,7 +332,7 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
                 << r->median_ms << ',' << r->texel_mean << ',' << r->texel_p99 << ',' << r->texel_max << ','
                 << r->depth_mean << ',' << r->depth_max << ',' << r->image.rms << ',' << r->image.p999 << ','
                 << r->image.max << ',' << r->image.over_1lsb << ',' << r->converged.rms << ',' << r->converged.over_1lsb << ',' << r->undominated << '\n';
-            const bool listed = r->undominated || r == cheapest || r == cheapest_converged ||
+            const bool listed = r->undominated || r == cheapest || r == cheapest_converged || r == auto_result ||
                                 (s.linear == 16 && s.min_linear == 0 && s.binary == 6 && s.secant);
             if (!listed) continue;
             const std::string name = r->undominated ? "**" + s.label() + "**" : s.label();
@@ -315,7 +346,7 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
         chart.x_label = "CPU frame, ms (median)";
         chart.y_label = "image RMS error, 8-bit steps (floored at 1e-3)";
         chart.log_x = chart.log_y = true;
-        chart.series = {fixed_plain, fixed_secant, scaled, front};
+        chart.series = {fixed_plain, fixed_secant, scaled, front, auto_mark};
         const std::string svg = "relief-sweep-" + short_number(angle) + "deg.svg";
         write_text_file(out_dir + "/" + svg, chart.svg());
         md << "\n![" << short_number(angle) << " degrees](" << svg << ")\n";

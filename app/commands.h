@@ -50,7 +50,7 @@ int cmd_report(const std::vector<std::string>& scenes, const ReportOptions& opti
 int cmd_bench(const std::vector<std::string>& scenes, int frames, bool json, bool scaling, bool per_pass,
               const CommonOptions& common);
 int cmd_optics_figures(const std::string& out_dir, long long photons, int threads);
-int cmd_sweep(const std::string& technique, const std::string& out_dir, const CommonOptions& common);
+int cmd_sweep(const std::string& technique, const std::string& out_dir, int frames, const CommonOptions& common);
 int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions& common);
 int cmd_sweep_profile(const std::string& scene, const std::string& out_dir, int frames, const CommonOptions& common);
 // Every built-in profile scene when `scenes` is empty.

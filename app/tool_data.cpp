@@ -23,7 +23,8 @@ struct ToolData {
     // The sweeps' last runs kept with the tool (docs/ here; sweeps/<kind>/
     // in an install), whose charts the report shows.
     std::map<std::string, std::string> sweep_charts = {{"relief", SHADERTWIN_DOCS_DIR "/relief-sweep"},
-                                                       {"profile", SHADERTWIN_DOCS_DIR "/profile-sweep"}};
+                                                       {"profile", SHADERTWIN_DOCS_DIR "/profile-sweep"},
+                                                       {"thin-slab", SHADERTWIN_DOCS_DIR "/thin-slab-speed"}};
     std::string tool_name = "shadertwin";
 };
 

@@ -36,6 +36,7 @@ install(DIRECTORY ${CMAKE_SOURCE_DIR}/materials/ DESTINATION ${_share}/materials
 # The sweeps' last kept runs, whose charts `report` shows (app/tool_data.h).
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs/relief-sweep/ DESTINATION ${_share}/sweeps/relief)
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs/profile-sweep/ DESTINATION ${_share}/sweeps/profile)
+install(DIRECTORY ${CMAKE_SOURCE_DIR}/docs/thin-slab-speed/ DESTINATION ${_share}/sweeps/thin-slab)
 install(FILES ${SHADERTWIN_GOLDEN_FILE} DESTINATION ${_share}/golden)
 install(FILES ${CMAKE_SOURCE_DIR}/sdk/tool_main.cpp DESTINATION ${_share})
 

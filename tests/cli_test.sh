@@ -1232,7 +1232,15 @@ PY
     # angle, and the error falling as the search refines.
     "$bin" sweep relief --frames 1 --set width=160 --set height=120 --out "$work/sweep" >"$work/sweep.md" ||
       fail "sweep relief failed"
-    [ "$(grep -vc "^#" "$work/sweep/relief-sweep.csv")" -eq 321 ] || fail "sweep relief: expected 320 settings"
+    # 80 settings at each angle, and quality: auto's beside them when it is
+    # none of them; each angle names auto's choice.
+    python3 - "$work/sweep/relief-sweep.csv" <<'PY' || fail "sweep relief: expected 80 settings at each angle, and auto's"
+import csv, collections, sys
+rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+per_angle = collections.Counter(r["angle_deg"] for r in rows)
+assert sorted(per_angle) == ["30", "60", "75", "85"] and all(n in (80, 81) for n in per_angle.values()), per_angle
+PY
+    [ "$(grep -c '^`quality: auto` takes ' "$work/sweep/relief-sweep.md")" -eq 4 ] || fail "sweep relief: auto's choice not named at each angle"
     for a in 30 60 75 85; do [ -s "$work/sweep/relief-sweep-${a}deg.svg" ] || fail "sweep relief: no chart at $a"; done
     python3 - "$work/sweep/relief-sweep.csv" <<'PY' || fail "sweep relief: errors do not fall with steps"
 import csv, sys
@@ -1500,9 +1508,26 @@ PY
     # No NaN, no break anywhere along the sweeps, on both backends.
     "$bin" sweep thin-slab --out "$work" >"$work/sweep.md" || { cat "$work/sweep.md"; fail "sweep found a break"; }
     grep -q "BREAK" "$work/sweep.md" && fail "sweep table marks a break"
-    for f in thin-slab-sweep.csv thin-slab-sweep-mu-mu0.svg thin-slab-sweep.md; do
+    for f in thin-slab-sweep.csv thin-slab-sweep-mu-mu0.svg thin-slab-sweep.md thin-slab-speed.csv \
+        thin-slab-speed-backlit.svg thin-slab-speed-frontlit.svg thin-slab-speed-grazing.svg; do
       [ -s "$work/$f" ] || fail "sweep wrote no $f"
     done
+    # Speed against accuracy: 4 variants x 6 meshes x 3 light paths, one
+    # choice of quality: auto per mesh and path, and per vertex failing the
+    # coarsest flag while the fragment variant holds it.
+    python3 - "$work/thin-slab-speed.csv" <<'PY' || fail "sweep thin-slab: the speed table is not as it should be"
+import csv, sys
+rows = list(csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#")))
+assert len(rows) == 72, len(rows)
+for path in ("backlit", "frontlit", "grazing"):
+    for mesh in {(r["columns"], r["rows"]) for r in rows}:
+        chosen = [r for r in rows if r["light"] == path and (r["columns"], r["rows"]) == mesh and r["auto"] == "1"]
+        assert len(chosen) == 1 and chosen[0]["variant"] != "baseline", (path, mesh, chosen)
+coarse = {r["variant"]: r for r in rows if r["light"] == "backlit" and r["columns"] == "4"}
+assert float(coarse["vertex"]["pixels_over_1lsb"]) > 0.05 and float(coarse["fragment"]["pixels_over_1lsb"]) < 0.01, coarse
+assert coarse["fragment"]["auto"] == "1"
+PY
+    grep -q "quality: auto" "$work/thin-slab-speed-grazing.svg" || fail "the speed chart does not mark auto's choice"
     ;;
 
   *)

@@ -9,7 +9,7 @@ namespace st {
 
 namespace {
 
-constexpr const char* kVariants[] = {"vertex", "host", "fragment"};  // the cost order
+constexpr const char* kCostOrder[] = {"vertex", "host", "fragment"};
 
 
 }  // namespace
@@ -36,7 +36,7 @@ ThinSlabQualityChoice measure_thin_slab_quality(const TwinLibrary& twins, int th
         for (DrawCall& d : pass.draws)
             if (d.fragment == "thin_slab") d.fragment = ThinSlabExactTwins::kExactThinSlab;
     const Image reference = renderer.render(exact);
-    for (const char* variant : kVariants) {
+    for (const char* variant : kCostOrder) {
         const Scene scene = load_scene_document(name, with_thin_slab_variant(document, variant), "");
         ThinSlabCandidate c{variant, object_error(renderer.render(scene.frame), reference, choice.budget)};
         choice.tried.push_back(c);

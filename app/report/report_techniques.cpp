@@ -127,7 +127,7 @@ std::vector<SweepChart> copy_sweep_charts(const std::vector<std::string>& techni
                                   (made.empty() ? std::string("made before files recorded their provenance")
                                                 : "made by " + made) +
                                   "); the red line joins the undominated settings, those no other setting beats on both speed and "
-                                  "accuracy. Again: " +
+                                  "accuracy, and a black dot marks what quality: auto takes. Again: " +
                                   tool_name() + " sweep " + technique + " --out DIR"});
         }
     }
