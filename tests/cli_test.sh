@@ -1204,6 +1204,8 @@ PY
       fail "sweep profile failed"
     [ "$(grep -vc "^#" "$work/sweep/profile-sweep.csv")" -eq 55 ] || fail "sweep profile: expected 54 settings"
     [ -s "$work/sweep/profile-sweep.svg" ] && [ -s "$work/sweep/profile-sweep-exact.png" ] || fail "sweep profile: no chart or image"
+    grep -q '^`quality: auto` takes ' "$work/sweep/profile-sweep.md" && grep -q "quality: auto" "$work/sweep/profile-sweep.svg" ||
+      fail "sweep profile: quality: auto's choice is not named and marked"
     python3 - "$work/sweep/profile-sweep.csv" <<'PY' || fail "sweep profile: the gather does not converge on the exact image"
 import csv, sys
 rows = {(r["pattern"], r["samples"], r["texture_size"]): r for r in csv.DictReader(l for l in open(sys.argv[1]) if not l.startswith("#"))}
