@@ -516,6 +516,8 @@ PY
     expect_bad_input "quality: a budget of 0 steps" "$bin" render profile-slab-edge --set quality=auto --set quality_budget=0
     expect_bad_input "quality: a non-numeric budget" "$bin" render profile-slab-edge --set quality=auto --set quality_budget=loose
     expect_bad_input "quality: auto on a scene with nothing to choose" "$bin" render triangles-basic --set quality=auto
+    expect_bad_input "quality: auto does not overwrite a bad variant" "$bin" render thin-slab-fragment-backlit --set quality=auto --set 'variant="nope"'
+    expect_bad_input "quality: auto does not overwrite a bad step count" "$bin" render relief-mapping --set quality=auto --set search.linear_steps=0
     expect_bad_input "quality: auto with a bad material" "$bin" render profile-slab-edge --set quality=auto --set gather.table_size=1
     expect_bad_input "zero resolution" "$bin" render triangles-basic --set width=0
     expect_bad_input "absurd resolution" "$bin" render triangles-basic --set height=100000

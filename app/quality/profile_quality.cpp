@@ -152,9 +152,10 @@ QualityChoice measure_quality(Backends& backends, const std::string& name, const
 
 namespace {
 
-// v2: the cache holds the whole record.
+// v2: the cache holds the whole record; v3: made only for a document that
+// stands on its own (resolve_profile_quality).
 std::string choice_key(const nlohmann::json& document) {
-    return quality_choice_key("quality v2", document, quality_budget(document));
+    return quality_choice_key("quality v3", document, quality_budget(document));
 }
 
 }  // namespace
@@ -197,6 +198,9 @@ nlohmann::json resolve_profile_quality(Backends& backends, const std::string& na
             }
         }
     }
+    // The scene as written first: a bad field the choice would overwrite is
+    // refused, not replaced (quality_resolver.cpp does the same).
+    load_scene_document(name, without_quality_fields(document), "");
     const QualityChoice choice = measure_quality(backends, name, document, 3);
     remember_quality_choice(document, choice);
     document = with_choice(document, choice.model(), choice.samples());

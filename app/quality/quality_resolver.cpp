@@ -48,14 +48,20 @@ std::optional<ReliefSetting> cached_setting(const nlohmann::json& record) {
 }
 
 // The record cached under `key` when `apply` takes it (writing its choice
-// into the document), else `measure`'s, cached then applied.
-nlohmann::json cached_or_measured(const std::string& key, nlohmann::json& document,
+// into the document), else `measure`'s, cached then applied; `name` is the
+// scene's, for its errors.
+nlohmann::json cached_or_measured(const std::string& name, const std::string& key, nlohmann::json& document,
                                   const std::function<bool(const nlohmann::json&, nlohmann::json&)>& apply,
                                   const std::function<nlohmann::json()>& measure) {
     if (const auto cached = load_cached_record(key)) {
         const nlohmann::json record = nlohmann::json::parse(*cached, nullptr, false);
         if (apply(record, document)) return record;
     }
+    // The scene as written must stand on its own first: a bad field that the
+    // choice would overwrite (a variant or step count out of its domain)
+    // is refused, not replaced. (A cached choice was checked when made: the
+    // keys' v2 marks records made since this check.)
+    load_scene_document(name, without_quality_fields(document), "");
     const nlohmann::json record = measure();
     store_cached_record(key, record.dump());
     if (!apply(record, document)) throw std::logic_error("quality auto: a measured record names no setting");
@@ -65,7 +71,7 @@ nlohmann::json cached_or_measured(const std::string& key, nlohmann::json& docume
 nlohmann::json resolve_relief_quality(int threads, const std::string& name, nlohmann::json& document) {
     static const ReliefSweepTwins twins;
     return cached_or_measured(
-        quality_choice_key("relief quality v1", document, relief_quality_budget(document)), document,
+        name, quality_choice_key("relief quality v2", document, relief_quality_budget(document)), document,
         [](const nlohmann::json& record, nlohmann::json& d) {
             const auto s = cached_setting(record);
             if (s) d = with_relief_setting(d, *s);
@@ -77,7 +83,7 @@ nlohmann::json resolve_relief_quality(int threads, const std::string& name, nloh
 nlohmann::json resolve_thin_slab_quality(int threads, const std::string& name, nlohmann::json& document) {
     static const ThinSlabExactTwins twins;
     return cached_or_measured(
-        quality_choice_key("thin-slab quality v1", document, thin_slab_quality_budget(document)), document,
+        name, quality_choice_key("thin-slab quality v2", document, thin_slab_quality_budget(document)), document,
         [](const nlohmann::json& record, nlohmann::json& d) {
             if (!record.is_object() || !record.contains("fields") || !record["fields"].is_object() ||
                 !record["fields"].contains("variant") || !record["fields"]["variant"].is_string())
