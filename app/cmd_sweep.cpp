@@ -23,6 +23,7 @@
 #include "shading/glsl_math.h"
 #include "kernels/thin_slab/thin_slab_model.h"
 #include "reference/isotropic_slab.h"
+#include "reference/thin_slab_brackets.h"
 #include "scene/scene.h"
 #include "scene/thin_slab_sweep.h"
 
@@ -34,12 +35,10 @@ constexpr double kBreak = 1e-3;  // relative error that counts as a break
 
 // Double-precision references of the four outputs (r, g, b, a) at the
 // shader's clamped inputs.
-double reference(int channel, double tau1, double mu, double mu0) {
+double exact_value(int channel, double tau1, double mu, double mu0) {
     switch (channel) {
-        case 0: return mu0 / (mu + mu0) * -std::expm1(-tau1 * (1.0 / mu + 1.0 / mu0));
-        case 1:
-            if (mu == mu0) return tau1 / mu0 * std::exp(-tau1 / mu0);
-            return mu0 / (mu - mu0) * std::exp(-tau1 / mu0) * std::expm1(tau1 * (mu - mu0) / (mu * mu0));
+        case 0: return reference::frontlit_bracket(tau1, mu, mu0);
+        case 1: return reference::backlit_bracket(tau1, mu, mu0);
         case 2: return std::exp(-tau1 / mu);
         default: return -std::expm1(-tau1);
     }
@@ -105,7 +104,7 @@ int cmd_sweep(const std::string& technique, const std::string& out_dir, int fram
             for (size_t i = 0; i < row.samples.size(); ++i) {
                 const SweepSample& smp = row.samples[i];
                 const float mu = std::fmax(smp.mu, MU_MIN), mu0 = std::fmax(smp.mu0, MU_MIN);
-                const double ref = reference(c, smp.tau1, mu, mu0);
+                const double ref = exact_value(c, smp.tau1, mu, mu0);
                 const float vc = cpu.pixel(int(i), image_row)[c], vg = gl.pixel(int(i), image_row)[c];
                 const double vn = naive(c, smp.tau1, mu, mu0);
                 nonfinite_cpu += !std::isfinite(vc);

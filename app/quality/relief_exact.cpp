@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "kernels/registry.h"
 #include "kernels/relief/relief.h"
 #include "reference/relief_intersection.h"
 #include "texture/sampler2d.h"
@@ -44,22 +43,9 @@ private:
 
 }  // namespace
 
-std::unique_ptr<VertexTwin> ReliefSweepTwins::make_vertex(const std::string& name) const {
-    return twins().make_vertex(name);
-}
-
-std::unique_ptr<FragmentTwin> ReliefSweepTwins::make_fragment(const std::string& name) const {
-    if (name == kExactReliefMapping)
-        return std::make_unique<ReliefMappingFragment>(std::make_shared<ExactReliefIntersector>());
-    return twins().make_fragment(name);
-}
-
-std::vector<std::string> ReliefSweepTwins::vertex_names() const { return twins().vertex_names(); }
-
-std::vector<std::string> ReliefSweepTwins::fragment_names() const {
-    std::vector<std::string> names = twins().fragment_names();
-    names.push_back(kExactReliefMapping);
-    return names;
-}
+ReliefSweepTwins::ReliefSweepTwins()
+    : TwinsWithFragment(kExactReliefMapping, [] {
+          return std::make_unique<ReliefMappingFragment>(std::make_shared<ExactReliefIntersector>());
+      }) {}
 
 }  // namespace st

@@ -8,20 +8,17 @@
 #include <memory>
 #include <string>
 
-#include "shading/twin_library.h"
+#include "app/quality/twins_with_fragment.h"
 
 namespace st {
 
 // The built-in twins plus kExactReliefMapping, the relief_mapping program
 // with the exact intersection.
-class ReliefSweepTwins final : public TwinLibrary {
+class ReliefSweepTwins final : public TwinsWithFragment {
 public:
     static constexpr const char* kExactReliefMapping = "relief_mapping_exact";
 
-    std::unique_ptr<VertexTwin> make_vertex(const std::string& name) const override;
-    std::unique_ptr<FragmentTwin> make_fragment(const std::string& name) const override;
-    std::vector<std::string> vertex_names() const override;
-    std::vector<std::string> fragment_names() const override;
+    ReliefSweepTwins();
 };
 
 }  // namespace st

@@ -7,9 +7,9 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "kernels/registry.h"
 #include "kernels/thin_slab/thin_slab.h"
 #include "kernels/thin_slab/thin_slab_model.h"
+#include "reference/thin_slab_brackets.h"
 #include "texture/sampler2d.h"
 
 namespace st {
@@ -20,10 +20,8 @@ constexpr double kInv4Pi = 0.25 / 3.14159265358979323846;
 
 // Eq. 4-9 at one fragment, in double. The model's own guards stay (mu and
 // mu0 at least MU_MIN, r2 at least R2_MIN: they define it at grazing
-// angles); the series branches go, as double needs none: Eq. 4's
-// 1 - e^-x is -expm1(-x), and Eq. 5's difference of exponentials is
-// e^(-tau1/mu0) expm1(d) with d = tau1 (mu - mu0) / (mu mu0), exact at
-// mu = mu0 too.
+// angles); the series branches go, as double needs none: the brackets are
+// the stable forms of reference/thin_slab_brackets.h.
 glm::dvec4 thin_slab_exact(const glm::dvec3& p, const glm::dvec3& n_in, const glm::dvec3& eye,
                            const glm::dvec3& light, double power, double tau1, const glm::dvec3& albedo) {
     const glm::dvec3 n = glm::normalize(n_in);
@@ -34,14 +32,7 @@ glm::dvec4 thin_slab_exact(const glm::dvec3& p, const glm::dvec3& n_in, const gl
     const double cos_l = glm::dot(n, l), cos_v = glm::dot(n, w);
     const double mu0 = std::max(std::abs(cos_l), double(MU_MIN)), mu = std::max(std::abs(cos_v), double(MU_MIN));
     const bool frontlit = (cos_l >= 0.0) == (cos_v >= 0.0);
-    double factor;
-    if (frontlit) {
-        factor = mu0 / (mu + mu0) * -std::expm1(-tau1 * (mu + mu0) / (mu * mu0));
-    } else {
-        const double d = tau1 * (mu - mu0) / (mu * mu0);
-        factor = d == 0.0 ? tau1 / mu * std::exp(-tau1 / mu0)
-                          : mu0 / (mu - mu0) * std::exp(-tau1 / mu0) * std::expm1(d);
-    }
+    const double factor = frontlit ? reference::frontlit_bracket(tau1, mu, mu0) : reference::backlit_bracket(tau1, mu, mu0);
     const double radiance = power * kInv4Pi * mu0 / r2 * kInv4Pi * factor;
     return glm::dvec4(albedo * radiance, std::exp(-tau1 / mu));
 }
@@ -79,21 +70,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<VertexTwin> ThinSlabExactTwins::make_vertex(const std::string& name) const {
-    return twins().make_vertex(name);
-}
-
-std::unique_ptr<FragmentTwin> ThinSlabExactTwins::make_fragment(const std::string& name) const {
-    if (name == kExactThinSlab) return std::make_unique<ExactThinSlabFragment>();
-    return twins().make_fragment(name);
-}
-
-std::vector<std::string> ThinSlabExactTwins::vertex_names() const { return twins().vertex_names(); }
-
-std::vector<std::string> ThinSlabExactTwins::fragment_names() const {
-    std::vector<std::string> names = twins().fragment_names();
-    names.push_back(kExactThinSlab);
-    return names;
-}
+ThinSlabExactTwins::ThinSlabExactTwins()
+    : TwinsWithFragment(kExactThinSlab, [] { return std::make_unique<ExactThinSlabFragment>(); }) {}
 
 }  // namespace st

@@ -12,19 +12,16 @@
 #include <string>
 #include <vector>
 
-#include "shading/twin_library.h"
+#include "app/quality/twins_with_fragment.h"
 
 namespace st {
 
 // The built-in twins plus kExactThinSlab.
-class ThinSlabExactTwins final : public TwinLibrary {
+class ThinSlabExactTwins final : public TwinsWithFragment {
 public:
     static constexpr const char* kExactThinSlab = "thin_slab_exact";
 
-    std::unique_ptr<VertexTwin> make_vertex(const std::string& name) const override;
-    std::unique_ptr<FragmentTwin> make_fragment(const std::string& name) const override;
-    std::vector<std::string> vertex_names() const override;
-    std::vector<std::string> fragment_names() const override;
+    ThinSlabExactTwins();
 };
 
 }  // namespace st
