@@ -16,12 +16,15 @@
 #include "app/commands/probe.h"
 #include "app/commands/fields.h"
 #include "app/error_line.h"
+#include "app/interface/uniform_interface.h"
 #include "app/output_provenance.h"
 #include "app/memory_budget.h"
 #include "app/option_domain.h"
+#include "app/tool_data.h"
 #include "app/quality/quality_resolver.h"
 #include "scene/input_error.h"
 #include "scene/layer_file.h"
+#include "scene/scene.h"
 
 namespace {
 
@@ -375,6 +378,8 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
         if (!gl_given) common.gl_platform = st::gl_platform_from_environment();
         // A scene's `quality: auto` is resolved by rendering candidates (app/quality/quality_resolver.h).
         st::install_quality_resolver(common.threads, common.gl_platform);
+        // Every scene's draws against what their GLSL declares, before anything renders.
+        st::install_frame_check(common.gl_platform);
         if (version) return st::cmd_version(common.gl_platform);
         if (app.got_subcommand("list")) return st::cmd_list();
         if (*render) return st::cmd_render(scenes, backend, out_dir, common);

@@ -348,6 +348,41 @@ std::string GlRenderer::renderer() const { return context_->renderer(); }
 std::string GlRenderer::version() const { return context_->version(); }
 GlPlatform GlRenderer::platform() const { return context_->platform(); }
 
+unsigned GlRenderer::program(const std::string& vertex, const std::string& fragment) {
+    auto key = std::make_pair(vertex, fragment);
+    auto it = state_->programs.find(key);
+    if (it == state_->programs.end()) {
+        const std::string& frag_path = shaders_->path(fragment, ".frag");
+        std::string frag_source = read_source(frag_path);
+        if (fragment_filter_) frag_source = fragment_filter_(fragment, frag_source);
+        it = state_->programs.emplace(key, link(context_->gl(), shaders_->path(vertex, ".vert"), frag_path, frag_source))
+                 .first;
+    }
+    return it->second;
+}
+
+std::vector<GlRenderer::ActiveUniform> GlRenderer::active_uniforms(const std::string& vertex,
+                                                                   const std::string& fragment) {
+    context_->make_current();
+    const GlApi& gl = context_->gl();
+    const GLuint p = program(vertex, fragment);
+    GLint count = 0;
+    gl.GetProgramiv(p, GL_ACTIVE_UNIFORMS, &count);
+    std::vector<ActiveUniform> out;
+    for (GLint i = 0; i < count; ++i) {
+        const GLuint index = GLuint(i);
+        GLint size = 1, name_length = 0;
+        gl.GetActiveUniformsiv(p, 1, &index, GL_UNIFORM_SIZE, &size);
+        gl.GetActiveUniformsiv(p, 1, &index, GL_UNIFORM_NAME_LENGTH, &name_length);
+        std::string name(size_t(std::max(name_length, 1)), '\0');
+        GLsizei written = 0;
+        gl.GetActiveUniformName(p, index, GLsizei(name.size()), &written, name.data());
+        name.resize(size_t(std::max(written, 0)));
+        out.push_back({name, std::max(size, 1)});
+    }
+    return out;
+}
+
 void GlRenderer::prepare(const Frame& frame) {
     context_->make_current();
     const GlApi& gl = context_->gl();
@@ -413,18 +448,8 @@ void GlRenderer::prepare(const Frame& frame) {
         }
 
         for (const DrawCall& dc : pass.draws) {
-            auto key = std::make_pair(dc.vertex, dc.fragment);
-            auto it = state_->programs.find(key);
-            if (it == state_->programs.end()) {
-                const std::string& frag_path = shaders_->path(dc.fragment, ".frag");
-                std::string frag_source = read_source(frag_path);
-                if (fragment_filter_) frag_source = fragment_filter_(dc.fragment, frag_source);
-                it = state_->programs
-                         .emplace(key, link(gl, shaders_->path(dc.vertex, ".vert"), frag_path, frag_source))
-                         .first;
-            }
             State::Draw d;
-            d.program = it->second;
+            d.program = program(dc.vertex, dc.fragment);
             d.state = dc.state;
             if (dc.host_stage) {
                 d.host_stage = dc.host_stage;

@@ -47,12 +47,24 @@ public:
     using FragmentFilter = std::function<std::string(const std::string& name, const std::string& source)>;
     void set_fragment_filter(FragmentFilter filter);
 
+    // The uniforms the program of (vertex, fragment) has active, by GL's
+    // reflection (compiled if need be): an array once, as "name[0]" with its
+    // size; an array of structs member by member ("lights[1].colour"); a
+    // block's members as GL names them. What the compiler removed is not
+    // among them.
+    struct ActiveUniform {
+        std::string name;
+        int size = 1;
+    };
+    std::vector<ActiveUniform> active_uniforms(const std::string& vertex, const std::string& fragment);
+
     std::string renderer() const;
     std::string version() const;
     GlPlatform platform() const;  // the one the context got: OSMesa or EGL
 
 private:
     struct State;
+    unsigned program(const std::string& vertex, const std::string& fragment);  // compiled once per pair
     std::unique_ptr<ShaderFiles> shaders_;
     std::unique_ptr<GlContext> context_;
     std::unique_ptr<State> state_;

@@ -176,6 +176,13 @@ void resolve_scene_paths(nlohmann::json& document, const std::string& folder) {
 
 void set_quality_resolver(QualityResolver resolver) { quality_resolver() = std::move(resolver); }
 
+static FrameCheck& frame_check() {
+    static FrameCheck check;
+    return check;
+}
+
+void set_frame_check(FrameCheck check) { frame_check() = std::move(check); }
+
 Scene load_scene_document(const std::string& name, nlohmann::json document, const std::string& where) {
     Scene scene;
     scene.name = name;
@@ -200,6 +207,7 @@ Scene load_scene_document(const std::string& name, nlohmann::json document, cons
         if (builder == scene_builders().end()) throw InputError("unknown scene kind '" + scene.kind + "'");
         scene.frame = builder->second(r, size);
         r.finish();
+        if (frame_check()) frame_check()(scene.frame);
     } catch (const InputError& e) {
         throw InputError(where.empty() ? std::string(e.what()) : where + ": " + e.what());
     }

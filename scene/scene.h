@@ -55,6 +55,12 @@ void resolve_scene_paths(nlohmann::json& document, const std::string& folder);
 using QualityResolver = std::function<nlohmann::json(const std::string& name, nlohmann::json& document)>;
 void set_quality_resolver(QualityResolver resolver);
 
+// A check of a built frame against what its programs declare (the app's:
+// app/interface/uniform_interface.h), run by load_scene_document on every
+// scene before anything renders; it throws InputError with one line.
+using FrameCheck = std::function<void(const Frame& frame)>;
+void set_frame_check(FrameCheck check);
+
 // Every named scene of the tool (scene_sources.h), sorted: the built-in
 // ones and a user tool's own.
 std::vector<std::string> builtin_scene_names();

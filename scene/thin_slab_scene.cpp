@@ -181,21 +181,25 @@ Frame build_thin_slab_scene(JsonReader& scene, SceneSize size) {
     DrawCall flag;
     flag.state.blend = BlendMode::OneSrcAlpha;  // Eq. 9
     flag.textures.push_back(faroe_flag_texture(flag_tex_w, flag_tex_h));
-    flag.uniforms = {uniform("view_proj", view_proj), uniform("eye", eye), uniform("light", light),
-                     uniform("power", power), uniform("tau1", tau1), uniform("albedo", albedo)};
-    if (variant == "fragment") {
-        flag.vertex = "thin_slab";
-        flag.fragment = "thin_slab";
-    } else if (variant == "vertex") {
-        flag.vertex = "thin_slab_vertex";
-        flag.fragment = "thin_slab_lit";
+    // Each variant's programs are given what they declare (every run checks
+    // that: app/interface/uniform_interface.h); the host variant's model
+    // reads the rest on the host.
+    flag.uniforms = {uniform("view_proj", view_proj)};
+    const std::vector<Uniform> model = {uniform("eye", eye), uniform("light", light), uniform("power", power),
+                                        uniform("albedo", albedo)};
+    if (variant == "fragment" || variant == "vertex") {
+        flag.vertex = variant == "fragment" ? "thin_slab" : "thin_slab_vertex";
+        flag.fragment = variant == "fragment" ? "thin_slab" : "thin_slab_lit";
+        flag.uniforms.insert(flag.uniforms.end(), model.begin(), model.end());
+        flag.uniforms.push_back(uniform("tau1", tau1));
     } else if (variant == "host") {
         flag.vertex = "thin_slab_host";
         flag.fragment = "thin_slab_lit";
         flag.host_stage = std::make_shared<ThinSlabHostStage>(eye, light, power, tau1, albedo);
-    } else {
+    } else {  // the constant-alpha baseline: no tau1
         flag.vertex = "thin_slab";
         flag.fragment = "thin_slab_baseline";
+        flag.uniforms.insert(flag.uniforms.end(), model.begin(), model.end());
     }
     flag_mesh(shape, variant == "host", flag);
     pass.draws.push_back(std::move(flag));

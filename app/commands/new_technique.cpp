@@ -9,7 +9,7 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "app/new_technique/glsl_declarations.h"
+#include "app/interface/glsl_declarations.h"
 #include "app/new_technique/skeleton_files.h"
 #include "gl/gl_renderer.h"
 #include "kernels/registry.h"
@@ -55,8 +55,8 @@ int cmd_new_technique(const std::string& name, const std::string& vert, const st
     // With any #include "file" spliced in, as the GL side reads a shader:
     // the project's copies are then whole.
     const std::string vert_source = glsl_text(vert), frag_source = glsl_text(frag);
-    const skeleton::GlslStage v = skeleton::parse_glsl_stage(vert_source, vert);
-    const skeleton::GlslStage f = skeleton::parse_glsl_stage(frag_source, frag);
+    const GlslStage v = parse_glsl_stage(vert_source, vert);
+    const GlslStage f = parse_glsl_stage(frag_source, frag);
     const std::vector<skeleton::ProjectFile> files = skeleton::skeleton_files(name, v, vert_source, f, frag_source);
 
     const fs::path target = fs::absolute(out_dir).lexically_normal();

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "app/new_technique/glsl_declarations.h"
+#include "app/interface/glsl_declarations.h"
 
 namespace st::skeleton {
 

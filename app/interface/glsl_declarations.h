@@ -1,8 +1,9 @@
 // glsl_declarations.h: what one GLSL stage declares at global scope, read
-// from its source for `shadertwin new-technique` (skeleton_files.h writes
-// the twin from it): inputs and outputs with their locations, interface
+// from its source: inputs and outputs with their locations, interface
 // blocks, uniforms of every type (samplers, matrices, arrays, structs),
-// constants, and each function with its body as written.
+// constants, and each function with its body as written. Two readers:
+// `shadertwin new-technique` writes a twin from it (skeleton_files.h), and
+// every run checks a draw's uniforms against it (uniform_interface.h).
 //
 // It reads declarations, not expressions: comments and preprocessor lines
 // are skipped (an object-like #define of a whole number is kept, for array
@@ -15,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace st::skeleton {
+namespace st {
 
 struct GlslVariable {
     std::string type;        // "vec3", "mat4", "sampler2D", or a struct's name
@@ -75,4 +76,4 @@ struct GlslStage {
 GlslStage parse_glsl_stage(const std::string& source, const std::string& path);
 GlslStage read_glsl_stage(const std::string& path);
 
-}  // namespace st::skeleton
+}  // namespace st

@@ -4,7 +4,7 @@
 // braces), and every refusal naming the file and the line; then the
 // skeleton's files for that pair: every uniform bound and read, every
 // varying in its slot.
-#include "app/new_technique/glsl_declarations.h"
+#include "app/interface/glsl_declarations.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -4,7 +4,7 @@
 // statements: a statement runs to a `;` or a `{` outside parentheses, and
 // its shape says what it is (a function has parentheses after its
 // layout(), a block has none, a struct starts with `struct`).
-#include "app/new_technique/glsl_declarations.h"
+#include "app/interface/glsl_declarations.h"
 
 #include <algorithm>
 #include <cctype>
@@ -14,7 +14,7 @@
 
 #include "scene/input_error.h"
 
-namespace st::skeleton {
+namespace st {
 
 namespace {
 
@@ -406,4 +406,4 @@ GlslStage read_glsl_stage(const std::string& path) {
     return parse_glsl_stage(text.str(), path);
 }
 
-}  // namespace st::skeleton
+}  // namespace st
