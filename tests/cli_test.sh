@@ -433,6 +433,19 @@ PY
     expect_bad_input "mistyped field" "$bin" render triangles-basic --set width='"wide"'
     expect_bad_input "NaN value" "$bin" render triangles-basic --set width=NaN
     expect_bad_input "out-of-range depth" "$bin" render triangles-basic --set triangles.0.positions.0=[1,2,7]
+    # A draw against what its GLSL declares (issue 29; app/interface/uniform_interface.h).
+    expect_refused "interface: a uniform the GLSL does not declare" \
+      "uniform 'treshold', which neither textured.vert nor loop_exit.frag declares" \
+      "$bin" render conformance-loop-exit --set uniforms.2.name=treshold
+    expect_refused "interface: a value of another type" "uniform 'threshold' is a float in loop_exit.frag, and the scene sets a vec2" \
+      "$bin" render conformance-loop-exit --set 'uniforms.2={"name":"threshold","vec2":[1,2]}'
+    expect_refused "interface: an active uniform never set" \
+      "uniform 'threshold' (float in loop_exit.frag, active in the program) is never set" \
+      "$bin" compare conformance-loop-exit --set uniforms.2.name=twin_threshold
+    expect_refused "interface: a texture on an undeclared sampler" "sampler 'texture0', which neither" \
+      "$bin" render conformance-loop-exit --backend cpu --set textures.0.sampler=texture0
+    expect_refused "interface: a uniform set twice" "uniform 'dir' is set twice" \
+      "$bin" render conformance-loop-exit --set 'uniforms.2={"name":"dir","float":1}'
     # Diffusion-profile scenes: the sample count, the table, the material's layers.
     expect_bad_input "profile: no samples" "$bin" render profile-parchment-multipole --set gather.samples=0
     expect_bad_input "profile: too many samples" "$bin" render profile-parchment-multipole --set gather.samples=5000
