@@ -51,6 +51,8 @@ public:
         : twin_(std::move(twin)), name_(std::move(name)) {}
     void bind(const Bindings& b) override { twin_->bind(b); }
     uint32_t inputs_read() const override { return twin_->inputs_read(); }
+    Interpolations interpolations() const override { return twin_->interpolations(); }
+    SlotNames input_names() const override { return twin_->input_names(); }
     void shade(const FragmentLanes& in, FragmentResult& out) const override {
         ProbeSink sink{name_};
         ProbeSink* const saved = current_probe_sink();

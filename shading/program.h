@@ -50,6 +50,12 @@ inline constexpr int kMaxVaryings = 8;
 enum class Interpolation : uint8_t { Smooth, NoPerspective, Flat };
 using Interpolations = std::array<Interpolation, kMaxVaryings>;  // [slot]
 
+// A twin's varying slots by the GLSL names they mirror, as GL names them
+// ("Normal"; a block member "VS_OUT.Normal"): entry N names slot N ("" for
+// none). Empty: the slots are the GLSL's explicit locations. Every run
+// checks either against the GLSL (app/interface/varying_interface.h).
+using SlotNames = std::vector<std::string>;
+
 struct VertexOut {
     glm::vec4 position{0.0f};                       // gl_Position
     std::array<glm::vec4, kMaxVaryings> varyings{};
@@ -121,6 +127,8 @@ public:
     // Called once per draw, before any run(): read uniforms here.
     virtual void bind(const Bindings&) {}
     virtual void run(const glm::vec4* attributes, VertexOut& out) const = 0;
+    // The GLSL outputs its varying slots hold (SlotNames above).
+    virtual SlotNames output_names() const { return {}; }
     // Non-null while the twin is still the skeleton `shadertwin
     // new-technique` wrote: what is left to write. `compare` fails every
     // scene that draws with it, saying so.
@@ -167,6 +175,8 @@ public:
     // Each input slot's interpolation qualifier (all Smooth unless the GLSL
     // says `flat` or `noperspective`).
     virtual Interpolations interpolations() const { return {}; }
+    // The GLSL inputs its varying slots hold (SlotNames above).
+    virtual SlotNames input_names() const { return {}; }
     // As VertexTwin::unwritten().
     virtual const char* unwritten() const { return nullptr; }
 };

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -385,6 +386,8 @@ const GlslFunction* GlslStage::function(const std::string& name) const {
         if (f.name == name) return &f;
     return nullptr;
 }
+
+std::string GlslStage::file_name() const { return std::filesystem::path(path).filename().string(); }
 
 const GlslStruct* GlslStage::struct_named(const std::string& name) const {
     for (const GlslStruct& s : structs)

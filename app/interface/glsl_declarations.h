@@ -68,6 +68,7 @@ struct GlslStage {
     std::map<std::string, int> defines;   // object-like #defines of whole numbers
 
     const GlslFunction* function(const std::string& name) const;
+    std::string file_name() const;  // the path's last part, for messages
     const GlslStruct* struct_named(const std::string& name) const;
 };
 

@@ -6,23 +6,23 @@
 
 #include <algorithm>
 #include <cctype>
-#include <filesystem>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <set>
+#include <tuple>
 
 #include "gl/gl_renderer.h"
+#include "app/interface/varying_interface.h"
 #include "app/tool_data.h"
 #include "gl/shader_files.h"
+#include "kernels/registry.h"
 #include "scene/input_error.h"
 #include "scene/scene.h"
 
 namespace st {
 
 namespace {
-
-std::string file_name(const GlslStage& s) { return std::filesystem::path(s.path).filename().string(); }
 
 bool is_sampler(const std::string& type) { return type.find("sampler") != std::string::npos; }
 
@@ -59,8 +59,8 @@ private:
             return;
         }
         if (leaves_.size() >= kMaxLeaves)
-            throw InputError(file_name(s) + ": more than " + std::to_string(kMaxLeaves) + " uniform values");
-        leaves_.emplace(name, Leaf{type, file_name(s)});  // a uniform both stages declare: the first
+            throw InputError(s.file_name() + ": more than " + std::to_string(kMaxLeaves) + " uniform values");
+        leaves_.emplace(name, Leaf{type, s.file_name()});  // a uniform both stages declare: the first
     }
 
     std::map<std::string, Leaf> leaves_;
@@ -112,12 +112,12 @@ std::string why_undeclared(const std::string& name, const GlslStage& vs, const G
                 }
             }
             if (!b.instance.empty() && b.name == base && !var)
-                return "'" + name + "': uniform block " + b.name + " (" + file_name(*s) + ") has no such member";
+                return "'" + name + "': uniform block " + b.name + " (" + s->file_name() + ") has no such member";
         }
         if (var) break;
     }
     if (!var)
-        return "the scene sets uniform '" + name + "', which neither " + file_name(vs) + " nor " + file_name(fs) +
+        return "the scene sets uniform '" + name + "', which neither " + vs.file_name() + " nor " + fs.file_name() +
                " declares (a typo? a uniform only the twin reads is named twin_*)";
     std::string type = var->type;
     int array_size = var->array_size;
@@ -126,12 +126,12 @@ std::string why_undeclared(const std::string& name, const GlslStage& vs, const G
         if (name[p] == '[') {
             const size_t close = name.find(']', p);
             const std::string index = close == std::string::npos ? "" : name.substr(p + 1, close - p - 1);
-            if (array_size == 0) return "uniform '" + name + "': " + path + " is a " + type + " in " + file_name(*stage) + ", not an array";
+            if (array_size == 0) return "uniform '" + name + "': " + path + " is a " + type + " in " + stage->file_name() + ", not an array";
             const bool digits = !index.empty() && index.size() < 9 &&
                                 std::all_of(index.begin(), index.end(), [](char c) { return std::isdigit((unsigned char)c); });
             if (!digits || std::stoi(index) >= array_size)
                 return "uniform '" + name + "': " + path + " is " + type + "[" + std::to_string(array_size) + "] in " +
-                       file_name(*stage) + " (indices 0 to " + std::to_string(array_size - 1) + ")";
+                       stage->file_name() + " (indices 0 to " + std::to_string(array_size - 1) + ")";
             array_size = 0;
             path = name.substr(0, close + 1);
             p = close + 1;
@@ -142,11 +142,11 @@ std::string why_undeclared(const std::string& name, const GlslStage& vs, const G
             const GlslStruct* st = stage->struct_named(type);
             if (!st || array_size > 0)
                 return "uniform '" + name + "': " + path + " is a " + type + (array_size ? "[]" : "") + " in " +
-                       file_name(*stage) + ", which has no member '" + member + "'";
+                       stage->file_name() + ", which has no member '" + member + "'";
             const auto m = std::find_if(st->members.begin(), st->members.end(),
                                         [&](const GlslVariable& v) { return v.name == member; });
             if (m == st->members.end())
-                return "uniform '" + name + "': struct " + type + " (" + file_name(*stage) + ") has no member '" + member + "'";
+                return "uniform '" + name + "': struct " + type + " (" + stage->file_name() + ") has no member '" + member + "'";
             type = m->type;
             array_size = m->array_size;
             path = name.substr(0, q);
@@ -156,7 +156,7 @@ std::string why_undeclared(const std::string& name, const GlslStage& vs, const G
         }
     }
     return "uniform '" + name + "' is a " + type + (array_size ? "[" + std::to_string(array_size) + "]" : "") + " in " +
-           file_name(*stage) + ": set each " + (array_size ? "element ('" + name + "[0]', ...)" : "member") +
+           stage->file_name() + ": set each " + (array_size ? "element ('" + name + "[0]', ...)" : "member") +
            " as GL names it";
 }
 
@@ -189,8 +189,8 @@ void check_draw_uniforms(const DrawCall& draw, const GlslStage& vs, const GlslSt
     for (const Texture& t : draw.textures) {
         const auto leaf = find(t.sampler);
         if (leaf == leaves.end() || !is_sampler(leaf->second.type))
-            throw InputError("a texture is bound to sampler '" + t.sampler + "', which neither " + file_name(vs) +
-                             " nor " + file_name(fs) + " declares as a sampler");
+            throw InputError("a texture is bound to sampler '" + t.sampler + "', which neither " + vs.file_name() +
+                             " nor " + fs.file_name() + " declares as a sampler");
         const bool cube = leaf->second.type.find("Cube") != std::string::npos;
         if (cube != t.cube)
             throw InputError("sampler '" + t.sampler + "' is a " + leaf->second.type + " in " + leaf->second.where +
@@ -221,6 +221,7 @@ void check_frame_uniforms(const Frame& frame, const std::vector<std::string>& gl
     static std::map<std::vector<std::string>, std::unique_ptr<ShaderFiles>> indexes;
     static std::map<std::string, std::shared_ptr<const GlslStage>> stages;
     static std::map<std::pair<std::string, std::string>, ActiveUniforms> programs;
+    static std::set<std::tuple<std::string, std::string, int>> twins_checked;
     std::lock_guard<std::mutex> lock(mutex);
     auto& files = indexes[glsl_roots];
     auto stage = [&](const std::string& name, const char* extension) {
@@ -250,6 +251,15 @@ void check_frame_uniforms(const Frame& frame, const std::vector<std::string>& gl
                 program = &it->second;
             }
             check_draw_uniforms(draw, *vs, *fs, program);
+            // The twins' slots against the GLSL's inputs and outputs, once per
+            // program and attribute count (a program without twins runs on GL only).
+            const auto key = std::make_tuple(draw.vertex, draw.fragment, draw.vertices.attribute_count);
+            if (!twins_checked.count(key)) {
+                const std::unique_ptr<VertexTwin> vt = make_vertex_twin(draw.vertex);
+                const std::unique_ptr<FragmentTwin> ft = make_fragment_twin(draw.fragment);
+                if (vt && ft) check_twin_varyings(*vs, *vt, *fs, *ft, draw.vertices.attribute_count);
+                twins_checked.insert(key);
+            }
         }
 }
 

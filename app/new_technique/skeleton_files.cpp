@@ -33,6 +33,7 @@ struct Varying {
     std::string fragment_name;  // as the fragment GLSL reads it
     std::string constant;       // the vertex twin's slot constant: "v_uv", "vs_out_uv"
     std::string fragment_constant;  // the fragment twin's: "v_uv", "fs_in_uv"
+    std::string gl_name;        // as GL names it, the same in both stages: "v_uv", "VS_OUT.uv"
     std::string type;
     int slot = 0;
     std::string interpolation = "smooth";  // the fragment input's: smooth, noperspective or flat
@@ -177,6 +178,7 @@ Interface interface_of(const GlslStage& vert, const GlslStage& frag) {
                                  "(one slot each; arrays, structs, doubles and matrices are not modelled)");
         Varying y;
         y.vertex_name = v.name, y.constant = constant_name(v.name), y.type = v.type;
+        y.gl_name = block_key(vert, "out", v.name);
         if (v.location >= 0) {
             y.slot = v.location;
         } else {
@@ -353,8 +355,21 @@ std::string header_file(const Names& n, const Interface& in) {
     }
     int varying_count = 0;
     for (const Varying& y : in.varyings) varying_count = std::max(varying_count, y.slot + 1);
+    // Each slot's GLSL name, as GL names it: how every run finds the GLSL
+    // variable a slot holds when the shader gives no locations.
+    auto slot_names = [&](bool inputs) {
+        std::vector<std::string> names(static_cast<size_t>(varying_count));
+        for (const Varying& y : in.varyings)
+            if (!inputs || !y.fragment_name.empty()) names[size_t(y.slot)] = y.gl_name;
+        while (!names.empty() && names.back().empty()) names.pop_back();
+        std::string list;
+        for (const std::string& name : names) list += (list.empty() ? "\"" : ", \"") + name + "\"";
+        return "{" + list + "}";
+    };
     o << "\nclass " << n.vertex_class << " final : public st::VertexTwin {\npublic:\n    int varying_count() const override { return "
-      << varying_count << "; }\n";
+      << varying_count << "; }\n"
+      << "    // The GLSL outputs in slots 0, 1, ... (checked against the GLSL on every run).\n"
+      << "    st::SlotNames output_names() const override { return " << slot_names(false) << "; }\n";
     if (!in.vertex_uniforms.empty()) o << "    void bind(const st::Bindings& b) override;\n";
     o << "    void run(const glm::vec4* attributes, st::VertexOut& out) const override;\n"
       << "    // Delete once run() is written: until then `compare` fails, saying so.\n"
@@ -366,7 +381,9 @@ std::string header_file(const Names& n, const Interface& in) {
     }
     o << "};\n\nclass " << n.fragment_class << " final : public st::FragmentProgram<" << n.fragment_class << "> {\npublic:\n";
     if (!in.fragment_uniforms.empty()) o << "    void bind(const st::Bindings& b) override;\n";
-    o << "    // The varying components main() reads: only these are interpolated.\n"
+    o << "    // The GLSL inputs in slots 0, 1, ... (checked against the GLSL on every run).\n"
+      << "    st::SlotNames input_names() const override { return " << slot_names(true) << "; }\n"
+      << "    // The varying components main() reads: only these are interpolated.\n"
       << "    uint32_t inputs_read() const override;\n";
     if (std::any_of(in.varyings.begin(), in.varyings.end(),
                     [](const Varying& y) { return !y.fragment_name.empty() && y.interpolation != "smooth"; }))

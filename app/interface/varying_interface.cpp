@@ -1,0 +1,195 @@
+// varying_interface.cpp: see varying_interface.h. Each stage's inputs and
+// outputs are listed as GL names them (a block member "Block.member"), with
+// their location (explicit, or counted from the block's), type and
+// qualifier, and whether the stage's code names them; the twins' slots are
+// then looked up by name or location.
+#include "app/interface/varying_interface.h"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <regex>
+#include <set>
+
+#include "scene/input_error.h"
+
+namespace st {
+
+namespace {
+
+// The stage's code (function bodies) without comments.
+std::string code_of(const GlslStage& s) {
+    std::string code, out;
+    for (const GlslFunction& f : s.functions) code += f.body + "\n";
+    for (size_t p = 0; p < code.size();) {
+        if (code.compare(p, 2, "//") == 0) {
+            p = std::min(code.find('\n', p), code.size());
+        } else if (code.compare(p, 2, "/*") == 0) {
+            const size_t end = code.find("*/", p + 2);
+            p = end == std::string::npos ? code.size() : end + 2;
+            out += ' ';
+        } else {
+            out += code[p++];
+        }
+    }
+    return out;
+}
+
+// Whether `code` names `name` (not as a member: `x.name` does not count),
+// or with an instance, `instance.name`.
+bool names(const std::string& code, const std::string& instance, const std::string& name) {
+    const std::string pattern = instance.empty() ? "(^|[^A-Za-z0-9_.])" + name + "\\b"
+                                                 : "\\b" + instance + "\\s*\\.\\s*" + name + "\\b";
+    return std::regex_search(code, std::regex(pattern));
+}
+
+// Components of a varying type (a scalar or vector); 0 for what a twin's
+// vec4 slot cannot hold (a matrix, a struct, a double vector).
+int components(const std::string& type) {
+    if (type == "float" || type == "int" || type == "uint" || type == "bool") return 1;
+    for (const char* prefix : {"vec", "ivec", "uvec", "bvec"}) {
+        const std::string p = prefix;
+        if (type.size() == p.size() + 1 && type.compare(0, p.size(), p) == 0 && type.back() >= '2' && type.back() <= '4')
+            return type.back() - '0';
+    }
+    return 0;
+}
+
+Interpolation interpolation_of(const std::vector<std::string>& qualifiers) {
+    for (const std::string& q : qualifiers) {
+        if (q == "flat") return Interpolation::Flat;
+        if (q == "noperspective") return Interpolation::NoPerspective;
+    }
+    return Interpolation::Smooth;
+}
+
+const char* qualifier_name(Interpolation i) {
+    return i == Interpolation::Flat ? "flat" : i == Interpolation::NoPerspective ? "noperspective" : "smooth";
+}
+
+struct Varying {
+    std::string name;  // as GL names it
+    std::string type;
+    int location = -1;  // -1: none given
+    int array_size = 0;
+    Interpolation interpolation = Interpolation::Smooth;
+    bool used = false;  // named by the stage's code
+};
+
+std::vector<Varying> interface_of(const GlslStage& s, const std::string& storage) {
+    const std::string code = code_of(s);
+    std::vector<Varying> out;
+    for (const GlslVariable& v : storage == "in" ? s.inputs : s.outputs)
+        out.push_back({v.name, v.type, v.location, v.array_size, interpolation_of(v.qualifiers), names(code, "", v.name)});
+    for (const GlslBlock& b : s.blocks) {
+        if (b.storage != storage || b.array_size > 0) continue;
+        int next = b.location;
+        for (const GlslVariable& m : b.members) {
+            const int location = m.location >= 0 ? m.location : next;
+            out.push_back({b.name + "." + m.name, m.type, location, m.array_size, interpolation_of(m.qualifiers),
+                           names(code, b.instance, m.name)});
+            next = location < 0 ? -1 : location + std::max(1, m.array_size);
+        }
+    }
+    return out;
+}
+
+std::string slot_list(const std::vector<Varying>& vars) {
+    std::string out;
+    for (const Varying& v : vars)
+        out += (out.empty() ? "" : ", ") + v.name + (v.location >= 0 ? " at " + std::to_string(v.location) : "");
+    return out.empty() ? "none" : out;
+}
+
+// Slot -> the GLSL variable it holds, by the twin's names or else by location.
+std::map<int, const Varying*> slots_of(const std::vector<Varying>& vars, const SlotNames& twin_names,
+                                       const std::string& twin, const std::string& file, const char* what) {
+    std::map<int, const Varying*> slots;
+    if (twin_names.empty()) {
+        for (const Varying& v : vars)
+            if (v.location >= 0) slots[v.location] = &v;
+        return slots;
+    }
+    for (size_t slot = 0; slot < twin_names.size(); ++slot) {
+        const std::string& n = twin_names[slot];
+        if (n.empty()) continue;
+        const auto v = std::find_if(vars.begin(), vars.end(), [&](const Varying& x) { return x.name == n; });
+        if (v == vars.end())
+            throw InputError(twin + " names slot " + std::to_string(slot) + " '" + n + "', which " + file +
+                             " does not declare as an " + what + " (its " + what + "s: " + slot_list(vars) + ")");
+        if (v->location >= 0 && v->location != int(slot))
+            throw InputError(twin + " holds '" + n + "' in slot " + std::to_string(slot) + "; " + file +
+                             " declares it at location " + std::to_string(v->location));
+        slots[int(slot)] = &*v;
+    }
+    return slots;
+}
+
+}  // namespace
+
+void check_twin_varyings(const GlslStage& vs, const VertexTwin& vertex_twin, const GlslStage& fs,
+                         const FragmentTwin& fragment_twin, int attribute_count) {
+    const std::string vfile = vs.file_name(), ffile = fs.file_name();
+    const std::string vtwin = "the twin of " + vfile, ftwin = "the twin of " + ffile;
+
+    // Vertex inputs: the draw's attribute columns are locations 0 to N-1.
+    for (const Varying& a : interface_of(vs, "in"))
+        if (a.used && a.location >= attribute_count)
+            throw InputError(vfile + " reads input '" + a.name + "' at location " + std::to_string(a.location) +
+                             ", and the draw gives " + std::to_string(attribute_count) + " attributes");
+
+    // Fragment outputs: a twin writes one colour, location 0.
+    const std::vector<Varying> outputs = interface_of(fs, "out");
+    if (outputs.size() > 1 || (outputs.size() == 1 && outputs[0].location > 0))
+        throw InputError(ffile + " declares outputs " + slot_list(outputs) +
+                         "; a fragment twin writes one, at location 0");
+
+    const std::vector<Varying> inputs = interface_of(fs, "in");
+    const std::map<int, const Varying*> in_slots = slots_of(inputs, fragment_twin.input_names(), ftwin, ffile, "input");
+    const std::vector<Varying> vs_outputs = interface_of(vs, "out");
+    const std::map<int, const Varying*> out_slots =
+        slots_of(vs_outputs, vertex_twin.output_names(), vtwin, vfile, "output");
+    // The same name in both twins' slots.
+    for (const auto& [slot, in] : in_slots)
+        for (const auto& [out_slot, out] : out_slots)
+            if (in->name == out->name && slot != out_slot)
+                throw InputError(vtwin + " writes '" + in->name + "' to slot " + std::to_string(out_slot) + ", and " +
+                                 ftwin + " reads it from slot " + std::to_string(slot));
+
+    const uint32_t read = fragment_twin.inputs_read();
+    const Interpolations interpolations = fragment_twin.interpolations();
+    const bool said = read != ~0u;  // the default: every component, nothing said
+    for (int slot = 0; slot < kMaxVaryings; ++slot) {
+        const uint32_t bits = (read >> (4 * slot)) & 0xFu;
+        const auto mapped = in_slots.find(slot);
+        const Varying* v = mapped == in_slots.end() ? nullptr : mapped->second;
+        if (said && bits && !v)
+            throw InputError(ftwin + " reads varying slot " + std::to_string(slot) + ", where " + ffile +
+                             " declares no input (its inputs: " + slot_list(inputs) + ")");
+        if (said && bits && slot >= vertex_twin.varying_count())
+            throw InputError(ftwin + " reads varying slot " + std::to_string(slot) + ", and " + vtwin + " writes " +
+                             std::to_string(vertex_twin.varying_count()) + " slots");
+        if (!v) continue;
+        const int n = components(v->type);
+        if (said && n > 0 && v->array_size == 0 && (bits >> n) != 0)
+            throw InputError(ftwin + " reads component " + std::string(1, "xyzw"[31 - __builtin_clz(bits)]) +
+                             " of slot " + std::to_string(slot) + ", '" + v->name + "', a " + v->type + " in " + ffile);
+        if (v->interpolation != interpolations[size_t(slot)])
+            throw InputError("'" + v->name + "' is " + qualifier_name(v->interpolation) + " in " + ffile + ", and " +
+                             ftwin + "'s interpolations() has slot " + std::to_string(slot) + " " +
+                             qualifier_name(interpolations[size_t(slot)]));
+        if (said && v->used && !bits)
+            throw InputError(ffile + " uses input '" + v->name + "' (slot " + std::to_string(slot) + "), which " + ftwin +
+                             "'s inputs_read() leaves out: it would read NaN");
+    }
+    for (const Varying& v : inputs) {
+        if (!v.used) continue;
+        const bool placed = std::any_of(in_slots.begin(), in_slots.end(), [&](const auto& s) { return s.second == &v; });
+        if (!placed)
+            throw InputError(ffile + " uses input '" + v.name + "'" +
+                             (v.location < 0 ? " without a location, and " + ftwin + " names no slot for it (input_names())"
+                                             : ", which no slot of " + ftwin + " holds"));
+    }
+}
+
+}  // namespace st

@@ -1,0 +1,41 @@
+// varying_interface.h: a draw's twins checked against its GLSL's inputs and
+// outputs before anything renders (issue 29). GL links varyings by name or
+// location and never sees the twins; the CPU pipeline hands the vertex
+// twin's slot N to the fragment twin's slot N and never sees the GLSL. A
+// twin reading slot 2 where the shader declares Normal at 1 would show only
+// as wrong pixels; here it is one line.
+//
+// A twin's slot is mapped to a GLSL variable by its name where the twin
+// names its slots (input_names(), output_names(): what `new-technique`
+// writes, and what a shader without locations needs), else by the GLSL's
+// explicit location. Refused, each with one line naming the variable and
+// both sides' view:
+// - a slot the twin names that the GLSL does not declare, or declares at
+//   another location; the same name at different slots in the two twins;
+// - a component the fragment twin reads (inputs_read()) of a slot the GLSL
+//   declares nothing at, or past the declared type's size (z of a vec2);
+// - an interpolation qualifier (flat, noperspective) other than the twin's
+//   interpolations();
+// - an input the fragment shader's code uses whose slot the twin's
+//   inputs_read() leaves out (it would read NaN), or that the twin cannot
+//   place (no location and no name);
+// - a slot the fragment twin reads that the vertex twin does not write;
+// - a vertex input at a location past the draw's attributes;
+// - fragment outputs other than one at location 0 (what a twin writes).
+// A twin whose inputs_read() is every bit (the default) is not checked for
+// what it reads: it has not said.
+#pragma once
+
+#include <string>
+
+#include "app/interface/glsl_declarations.h"
+#include "shading/program.h"
+
+namespace st {
+
+// Throws InputError with one line for the first mismatch. `attribute_count`
+// is the draw's vertex attributes (VertexArray::attribute_count).
+void check_twin_varyings(const GlslStage& vertex, const VertexTwin& vertex_twin, const GlslStage& fragment,
+                         const FragmentTwin& fragment_twin, int attribute_count);
+
+}  // namespace st
