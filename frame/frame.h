@@ -17,11 +17,15 @@
 
 namespace st {
 
-// Vertex attributes are vec4 slots bound to GLSL locations 0..N-1, as
-// glVertexAttribPointer with 4 floats each; missing components are (0,0,0,1).
+// Vertex attributes are vec4 columns, each bound with glVertexAttribPointer
+// (4 floats; missing components are (0,0,0,1)) to GLSL location a, or, when
+// `names` is given, to the location GL's reflection gives the vertex input
+// names[a]: how a shader without layout(location = N) on its inputs is fed.
+// The vertex twin reads column a as attributes[a] either way.
 struct VertexArray {
     int attribute_count = 0;
     std::vector<glm::vec4> data;  // vertex-major: data[v * attribute_count + a]
+    std::vector<std::string> names;  // empty, or attribute_count GLSL input names ("": none)
     int vertex_count() const {
         return attribute_count ? int(data.size()) / attribute_count : 0;
     }

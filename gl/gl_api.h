@@ -30,7 +30,7 @@ namespace st {
     X(DepthFunc) X(DepthMask) X(Disable) X(DrawArrays) X(DrawElements) X(Enable) X(EnableVertexAttribArray) \
     X(Finish) X(FramebufferRenderbuffer) X(FramebufferTexture2D) X(GenBuffers) X(GenFramebuffers)          \
     X(GenRenderbuffers) X(GenSamplers) X(GenTextures) X(GenVertexArrays) X(GetError) X(GetProgramInfoLog)  \
-    X(GetProgramiv) X(GetShaderInfoLog) X(GetShaderiv) X(GetString) X(GetUniformLocation) X(LinkProgram)    \
+    X(GetAttribLocation) X(GetProgramiv) X(GetShaderInfoLog) X(GetShaderiv) X(GetString) X(GetUniformLocation) X(LinkProgram)    \
     X(PixelStorei) X(ReadPixels) X(RenderbufferStorage) X(SamplerParameterf) X(SamplerParameteri)         \
     X(ShaderSource) X(TexParameterf) X(TexParameteri) X(TexStorage2D) X(TexSubImage2D) X(Uniform1f)         \
     X(Uniform1i) X(Uniform2f) X(Uniform3f) X(Uniform4f) X(UniformMatrix4fv) X(UseProgram)                   \

@@ -464,8 +464,15 @@ void GlRenderer::prepare(const Frame& frame) {
                          dc.vertices.data.data(), GL_STATIC_DRAW);
             const GLsizei stride = GLsizei(dc.vertices.attribute_count * sizeof(glm::vec4));
             for (int a = 0; a < dc.vertices.attribute_count; ++a) {
-                gl.EnableVertexAttribArray(GLuint(a));
-                gl.VertexAttribPointer(GLuint(a), 4, GL_FLOAT, GL_FALSE, stride,
+                // Column a feeds location a, or the location GL gave the
+                // input it names (none: the compiler removed it).
+                const std::vector<std::string>& names = dc.vertices.names;
+                const GLint location = names.empty()            ? GLint(a)
+                                       : size_t(a) < names.size() ? gl.GetAttribLocation(d.program, names[size_t(a)].c_str())
+                                                                  : -1;
+                if (location < 0) continue;
+                gl.EnableVertexAttribArray(GLuint(location));
+                gl.VertexAttribPointer(GLuint(location), 4, GL_FLOAT, GL_FALSE, stride,
                                       reinterpret_cast<const void*>(size_t(a) * sizeof(glm::vec4)));
             }
             gl.GenBuffers(1, &d.ebo);

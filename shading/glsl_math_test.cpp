@@ -173,6 +173,23 @@ TEST(GlslMath, CommonVectorFormsArePerComponent) {
     EXPECT_EQ(glsl::fract(glm::vec2(1.25f, -0.25f)), glm::vec2(0.25f, 0.75f));
 }
 
+// pow, exp2, log2, ... on vectors: each component the scalar's bits (a PBR
+// shader's pow(color, vec3(1.0/2.2)) found them missing).
+TEST(GlslMath, ExponentialVectorFormsArePerComponent) {
+    using namespace glsl;
+    const Vec3 v(Float(0.3f), Float(2.5f), Float(17.0f));
+    const Vec3 p = pow(v, Vec3(Float(1.0f / 2.2f)));
+    const Vec3 e = exp2(v), l = log(v), r = inversesqrt(v);
+    for (int c = 0; c < 3; ++c) {
+        const float x = v[c][0];
+        EXPECT_EQ(std::bit_cast<uint32_t>(p[c][0]), std::bit_cast<uint32_t>(pow(x, 1.0f / 2.2f)));
+        EXPECT_EQ(std::bit_cast<uint32_t>(e[c][0]), std::bit_cast<uint32_t>(exp2(x)));
+        EXPECT_EQ(std::bit_cast<uint32_t>(l[c][0]), std::bit_cast<uint32_t>(log(x)));
+        EXPECT_EQ(std::bit_cast<uint32_t>(r[c][0]), std::bit_cast<uint32_t>(inversesqrt(x)));
+    }
+    EXPECT_EQ(glsl::pow(glm::vec2(4.0f, 9.0f), glm::vec2(0.5f)), glm::vec2(glsl::pow(4.0f, 0.5f), glsl::pow(9.0f, 0.5f)));
+}
+
 TEST(GlslMath, TrigonometryLanesGiveTheScalarBits) {
     using namespace glsl;
     same_bits([](Float x) { return sin(x); }, [](float x) { return sin(x); }, "sin");

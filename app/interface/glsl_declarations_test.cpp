@@ -179,7 +179,10 @@ TEST(SkeletonFiles, BindsReadsAndPlacesEverythingTheShadersDeclare) {
     EXPECT_NE(scene.find("st::read_texture_field(scene, \"depthMap\", \"depthMap\", budget)"), std::string::npos);
     EXPECT_NE(scene.find("st::read_uniform_field(scene, \"weights\", \"float\", 8, draw.uniforms);"), std::string::npos);
     EXPECT_NE(scene.find("std::vector<st::JsonReader> items0 = scene.objects(\"lights\", 2, 2);"), std::string::npos) << scene;
-    EXPECT_NE(scene.find("draw.vertices.data.push_back({x, y, 0.0f, 1.0f});  // location 0 (vec3 aPos): position"),
+    EXPECT_NE(scene.find("draw.vertices.data.push_back({x, y, 0.0f, 1.0f});  // attribute 0 (vec3 aPos): position"),
+              std::string::npos) << scene;
+    // Each column names its input, so that GL binds it by name.
+    EXPECT_NE(scene.find("draw.vertices.names = {\"aPos\", \"aNormal\", \"aTexCoords\", \"aTangent\"};"),
               std::string::npos) << scene;
     // The first scene has a value for every uniform, one of each shape.
     const nlohmann::json first = nlohmann::json::parse(file_of(files, "scenes/pom-first.json"));
@@ -258,7 +261,8 @@ TEST(SkeletonFiles, RefusesAnInterfaceTwinsCannotHave) {
     const std::string v = "#version 450\nlayout(location = 0) in vec4 p;\nout vec2 uv;\nvoid main() {}\n";
     const std::string fr = "#version 450\nin vec2 uv;\nout vec4 c;\nvoid main() {}\n";
     EXPECT_EQ(refusal(v, fr), "(taken)");
-    EXPECT_EQ(refusal("#version 450\nin vec4 p;\nvoid main() {}\n", fr).substr(0, 40), "t.vert:2: input 'p' has no layout(locati");
+    // An input without a location takes the next free column (bound by name).
+    EXPECT_EQ(refusal("#version 450\nin vec4 p;\nout vec2 uv;\nvoid main() {}\n", fr), "(taken)");
     EXPECT_EQ(refusal(v, "#version 450\nin vec2 st;\nout vec4 c;\nvoid main() {}\n"),
               "t.frag:2: input 'st' has no vertex output of its name");
     EXPECT_EQ(refusal(v, "#version 450\nin vec2 uv;\nout vec4 c;\nout vec4 d;\nvoid main() {}\n"),

@@ -128,15 +128,40 @@ std::map<int, const Varying*> slots_of(const std::vector<Varying>& vars, const S
 }  // namespace
 
 void check_twin_varyings(const GlslStage& vs, const VertexTwin& vertex_twin, const GlslStage& fs,
-                         const FragmentTwin& fragment_twin, int attribute_count) {
+                         const FragmentTwin& fragment_twin, const VertexArray& vertices) {
     const std::string vfile = vs.file_name(), ffile = fs.file_name();
     const std::string vtwin = "the twin of " + vfile, ftwin = "the twin of " + ffile;
 
-    // Vertex inputs: the draw's attribute columns are locations 0 to N-1.
-    for (const Varying& a : interface_of(vs, "in"))
-        if (a.used && a.location >= attribute_count)
+    // Vertex inputs: attribute column a is location a, or the input the
+    // draw names for it.
+    const int attribute_count = vertices.attribute_count;
+    const std::vector<Varying> attributes = interface_of(vs, "in");
+    const std::vector<std::string>& names = vertices.names;
+    if (!names.empty() && names.size() != size_t(attribute_count))
+        throw InputError("the draw names " + std::to_string(names.size()) + " vertex attributes and gives " +
+                         std::to_string(attribute_count));
+    for (size_t column = 0; column < names.size(); ++column) {
+        if (names[column].empty()) continue;  // a column no input reads
+        const auto a = std::find_if(attributes.begin(), attributes.end(), [&](const Varying& x) { return x.name == names[column]; });
+        if (a == attributes.end())
+            throw InputError("the draw names attribute " + std::to_string(column) + " '" + names[column] + "', which " +
+                             vfile + " does not declare as an input (its inputs: " + slot_list(attributes) + ")");
+        if (a->location >= 0 && a->location != int(column))
+            throw InputError("the draw gives '" + a->name + "' as attribute " + std::to_string(column) + "; " + vfile +
+                             " declares it at location " + std::to_string(a->location));
+    }
+    for (const Varying& a : attributes) {
+        if (!a.used) continue;
+        const bool named = std::find(names.begin(), names.end(), a.name) != names.end();
+        if (!names.empty() && !named)
+            throw InputError(vfile + " uses input '" + a.name + "', which no attribute of the draw names");
+        if (names.empty() && a.location < 0)
+            throw InputError(vfile + " uses input '" + a.name + "' without a location, and the draw does not name its "
+                             "attributes (VertexArray::names)");
+        if (names.empty() && a.location >= attribute_count)
             throw InputError(vfile + " reads input '" + a.name + "' at location " + std::to_string(a.location) +
                              ", and the draw gives " + std::to_string(attribute_count) + " attributes");
+    }
 
     // Fragment outputs: a twin writes one colour, location 0.
     const std::vector<Varying> outputs = interface_of(fs, "out");

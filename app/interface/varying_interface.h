@@ -20,7 +20,10 @@
 //   inputs_read() leaves out (it would read NaN), or that the twin cannot
 //   place (no location and no name);
 // - a slot the fragment twin reads that the vertex twin does not write;
-// - a vertex input at a location past the draw's attributes;
+// - a vertex input at a location past the draw's attributes; where the
+//   draw names its attributes (VertexArray::names), a name the vertex
+//   shader does not declare as an input, or declares at another location,
+//   and an input it uses that no attribute names;
 // - fragment outputs other than one at location 0 (what a twin writes).
 // A twin whose inputs_read() is every bit (the default) is not checked for
 // what it reads: it has not said.
@@ -33,9 +36,9 @@
 
 namespace st {
 
-// Throws InputError with one line for the first mismatch. `attribute_count`
-// is the draw's vertex attributes (VertexArray::attribute_count).
+// Throws InputError with one line for the first mismatch. `vertices` are
+// the draw's (their attribute count and names).
 void check_twin_varyings(const GlslStage& vertex, const VertexTwin& vertex_twin, const GlslStage& fragment,
-                         const FragmentTwin& fragment_twin, int attribute_count);
+                         const FragmentTwin& fragment_twin, const VertexArray& vertices);
 
 }  // namespace st

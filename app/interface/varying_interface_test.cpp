@@ -63,10 +63,14 @@ struct Fragment final : FragmentTwin {
     SlotNames input_names() const override { return names; }
 };
 
-std::string refusal(const char* vert, const Vertex& vt, const char* frag, const Fragment& ft, int attributes = 3) {
+std::string refusal(const char* vert, const Vertex& vt, const char* frag, const Fragment& ft, int attributes = 3,
+                    std::vector<std::string> names = {}) {
+    VertexArray vertices;
+    vertices.attribute_count = attributes;
+    vertices.names = std::move(names);
     try {
         check_twin_varyings(parse_glsl_stage(vert, "shaders/pbr.vert"), vt, parse_glsl_stage(frag, "shaders/pbr.frag"), ft,
-                            attributes);
+                            vertices);
     } catch (const InputError& e) {
         return e.what();
     }
@@ -147,6 +151,28 @@ TEST(VaryingInterface, QualifiersAttributesAndOutputs) {
                                                                       "layout(location = 1) out vec4 bright;\n");
     EXPECT_EQ(refusal(kLocatedVert, vt, two_outputs.c_str(), ft, 1),
               "pbr.frag declares outputs colour at 0, bright at 1; a fragment twin writes one, at location 0");
+}
+
+// Attributes by name: a vertex shader without locations on its inputs.
+TEST(VaryingInterface, AttributesByName) {
+    const std::string unlocated = std::string(kPbrVert).replace(std::string(kPbrVert).find("layout (location = 0) in vec3 aPos;"),
+                                                                 35, "in vec3 aPos;");
+    Vertex vt;
+    vt.names = {"TexCoords", "WorldPos", "Normal"};
+    Fragment ft;
+    ft.names = vt.names;
+    EXPECT_EQ(refusal(unlocated.c_str(), vt, kPbrFrag, ft, 3),
+              "pbr.vert uses input 'aPos' without a location, and the draw does not name its attributes (VertexArray::names)");
+    EXPECT_EQ(refusal(unlocated.c_str(), vt, kPbrFrag, ft, 3, {"aPos", "aTexCoords", "aNormal"}), "");
+    // aPos may sit in any column; the others keep their locations.
+    EXPECT_EQ(refusal(unlocated.c_str(), vt, kPbrFrag, ft, 3, {"aNormal", "aTexCoords", "aPos"}),
+              "the draw gives 'aNormal' as attribute 0; pbr.vert declares it at location 2");
+    EXPECT_EQ(refusal(unlocated.c_str(), vt, kPbrFrag, ft, 3, {"aPoss", "aTexCoords", "aNormal"}),
+              "the draw names attribute 0 'aPoss', which pbr.vert does not declare as an input (its inputs: aPos, "
+              "aTexCoords at 1, aNormal at 2)");
+    EXPECT_EQ(refusal(unlocated.c_str(), vt, kPbrFrag, ft, 2, {"aPos", "aTexCoords"}),
+              "pbr.vert uses input 'aNormal', which no attribute of the draw names");
+    EXPECT_EQ(refusal(unlocated.c_str(), vt, kPbrFrag, ft, 3, {"aPos"}), "the draw names 1 vertex attributes and gives 3");
 }
 
 }  // namespace

@@ -154,15 +154,24 @@ Interface interface_of(const GlslStage& vert, const GlslStage& frag) {
             block_uniforms[size_t(k)].push_back(v);
         }
     }
-    // Attributes: location N is the Nth vec4 of each vertex.
+    // Attributes: column N of each vertex is location N, and an input
+    // without a location takes the next free column (the scene names every
+    // column's input, so GL binds it by name: VertexArray::names).
+    std::set<int> columns;
+    for (const GlslVariable& v : vert.inputs)
+        if (v.location >= 0) columns.insert(v.location);
+    int next_column = 0;
     for (const GlslVariable& v : vert.inputs) {
-        if (v.location < 0)
-            refuse(vert, v.line, "input '" + v.name + "' has no layout(location = N): vertex attribute N is the Nth "
-                                 "vec4 of each vertex, so give each input its location");
         if (!components(v.type) || v.array_size)
             refuse(vert, v.line, "input " + v.type + " " + v.name + ": attributes are float, vec2, vec3 or vec4");
-        if (v.location >= kAttributes) refuse(vert, v.line, "location " + std::to_string(v.location) + ": at most 16 attributes");
-        in.attributes.push_back({v.name, v.type, v.location});
+        int column = v.location;
+        if (column < 0) {
+            while (columns.count(next_column)) ++next_column;
+            column = next_column;
+            columns.insert(column);
+        }
+        if (column >= kAttributes) refuse(vert, v.line, "input '" + v.name + "' in column " + std::to_string(column) + ": at most 16 attributes");
+        in.attributes.push_back({v.name, v.type, column});
     }
     std::sort(in.attributes.begin(), in.attributes.end(), [](const Attribute& a, const Attribute& b) { return a.location < b.location; });
     // Varyings: the vertex outputs' slots (its location, else the next free one).
@@ -423,7 +432,7 @@ std::string vertex_file(const Names& n, const Interface& in, const GlslStage& ve
     o << "// " << n.name << "_vert.cpp: twin of glsl/" << n.name << ".vert, line for line, one vertex at a time.\n#include \""
       << n.name << ".h\"\n\n#include \"shading/glsl_math.h\"\n#include \"shading/glsl_texture.h\"\n\nnamespace {\n";
     for (const Attribute& a : in.attributes)
-        o << "constexpr int " << a.name << " = " << a.location << ";  // layout(location = " << a.location << ") in " << a.type << "\n";
+        o << "constexpr int " << a.name << " = " << a.location << ";  // attribute " << a.location << ": in " << a.type << " " << a.name << "\n";
     for (const Varying& y : in.varyings)
         o << "constexpr int " << y.constant << " = " << y.slot << ";  // varying slot: out " << y.type << " " << y.vertex_name << "\n";
     o << "}  // namespace\n";
@@ -575,18 +584,27 @@ std::string scene_file(const Names& n, const Interface& in) {
       << "    // matrices), u and v running 0 to 1 across it.\n"
       << "    const int grid = scene.integer_or(\"grid\", 8, 1, 256);\n"
       << "    draw.vertices.attribute_count = " << count << ";\n"
+      << "    draw.vertices.names = {" << [&] {
+             // Each column's vertex input, by which GL binds it.
+             std::string list;
+             for (int l = 0; l < count; ++l) {
+                 const auto a = std::find_if(in.attributes.begin(), in.attributes.end(), [&](const Attribute& x) { return x.location == l; });
+                 list += std::string(l ? ", " : "") + "\"" + (a == in.attributes.end() ? "" : a->name) + "\"";
+             }
+             return list;
+         }() << "};  // attribute N feeds the vertex input of that name\n"
       << "    for (int j = 0; j <= grid; ++j)\n        for (int i = 0; i <= grid; ++i) {\n"
       << "            const float u = float(i) / float(grid), v = float(j) / float(grid);\n"
       << "            [[maybe_unused]] const float x = -0.9f + 1.8f * u, y = -0.9f + 1.8f * v;\n";
     for (int l = 0; l < count; ++l) {
         const auto a = std::find_if(in.attributes.begin(), in.attributes.end(), [&](const Attribute& x) { return x.location == l; });
         if (a == in.attributes.end()) {
-            o << "            draw.vertices.data.push_back({0.0f, 0.0f, 0.0f, 0.0f});  // location " << l << ": unused\n";
+            o << "            draw.vertices.data.push_back({0.0f, 0.0f, 0.0f, 0.0f});  // attribute " << l << ": unused\n";
             continue;
         }
         std::string role;
         const std::string value = attribute_value(*a, role);
-        o << "            draw.vertices.data.push_back({" << value << "});  // location " << l << " (" << a->type << " "
+        o << "            draw.vertices.data.push_back({" << value << "});  // attribute " << l << " (" << a->type << " "
           << a->name << "): " << role << "\n";
     }
     o << "        }\n    for (int j = 0; j < grid; ++j)\n        for (int i = 0; i < grid; ++i) {\n"

@@ -17,6 +17,7 @@
 
 #include <limits>
 
+#include "shading/builtins/componentwise.h"
 #include "shading/builtins/primitives.h"
 
 namespace st::glsl {
@@ -127,5 +128,15 @@ ST_INLINE float inversesqrt(float x) { return 1.0f / std::sqrt(x); }
 ST_INLINE double inversesqrt(double x) { return 1.0 / std::sqrt(x); }
 ST_INLINE Double inversesqrt(Double x) { return Double(1.0) / simd::sqrt(x); }
 ST_INLINE Float inversesqrt(Float x) { return Float(1.0f) / simd::sqrt(x); }
+
+// The genType forms (vec2-vec4, and dvecN where a double form exists),
+// component by component as NIR scalarises them.
+ST_GLSL_COMPONENTWISE_1(exp2)
+ST_GLSL_COMPONENTWISE_1(exp)
+ST_GLSL_COMPONENTWISE_1(log2)
+ST_GLSL_COMPONENTWISE_1(log)
+ST_GLSL_COMPONENTWISE_2(pow)
+ST_GLSL_COMPONENTWISE_1(sqrt)
+ST_GLSL_COMPONENTWISE_1(inversesqrt)
 
 }  // namespace st::glsl
