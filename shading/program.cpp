@@ -28,6 +28,13 @@ int Bindings::get_int(const std::string& name) const {
     return int32_t(uniform_integer_bits(find(uniforms, name, UniformType::Int).value[0]));
 }
 
+bool Bindings::get_bool(const std::string& name) const {
+    if (uniforms)
+        for (const Uniform& u : *uniforms)
+            if (u.name == name && u.type == UniformType::UInt) return uniform_integer_bits(u.value[0]) != 0;
+    return get_int(name) != 0;
+}
+
 bool Bindings::has(const std::string& name) const {
     if (uniforms)
         for (const Uniform& u : *uniforms)

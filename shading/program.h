@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <glm/mat2x2.hpp>
@@ -91,8 +92,9 @@ struct Bindings {
     glm::mat3x4 get_mat3x4(const std::string& name) const;
     glm::mat4x2 get_mat4x2(const std::string& name) const;
     glm::mat4x3 get_mat4x3(const std::string& name) const;
-    // bool is set as an int (glUniform1i), bvecN as ivecN.
-    bool get_bool(const std::string& name) const { return get_int(name) != 0; }
+    // bool is set as an int (glUniform1i) or a uint (glUniform1ui), bvecN
+    // as ivecN.
+    bool get_bool(const std::string& name) const;
     glm::ivec2 get_ivec2(const std::string& name) const;
     glm::ivec3 get_ivec3(const std::string& name) const;
     glm::ivec4 get_ivec4(const std::string& name) const;
@@ -117,7 +119,63 @@ struct Bindings {
     glm::dmat4x3 get_dmat4x3(const std::string& name) const;
     const Sampler2D& sampler(const std::string& name) const;
     const SamplerCube& sampler_cube(const std::string& name) const;
+
+    // The uniform as the C++ type that mirrors its GLSL type (float, int,
+    // uint32_t, bool, double, glm's vecN, ivecN, uvecN, dvecN, matCxR,
+    // dmatCxR): b.get<glm::mat3>("normalMatrix"). Throws as the getters
+    // above do.
+    template <class T> T get(const std::string& name) const;
+    // A uniform array's elements as GL names them, name[0] ... name[N-1]:
+    // b.array<glm::vec3, 4>("lightPositions") for `uniform vec3
+    // lightPositions[4]`. Throws naming the first element the draw does not set.
+    template <class T, size_t N> std::array<T, N> array(const std::string& name) const {
+        std::array<T, N> out{};
+        for (size_t i = 0; i < N; ++i) out[i] = get<T>(name + "[" + std::to_string(i) + "]");
+        return out;
+    }
 };
+
+template <class T> T Bindings::get(const std::string& name) const {
+    if constexpr (std::is_same_v<T, float>) return get_float(name);
+    else if constexpr (std::is_same_v<T, int>) return get_int(name);
+    else if constexpr (std::is_same_v<T, uint32_t>) return get_uint(name);
+    else if constexpr (std::is_same_v<T, bool>) return get_bool(name);
+    else if constexpr (std::is_same_v<T, double>) return get_double(name);
+    else if constexpr (std::is_same_v<T, glm::vec2>) return get_vec2(name);
+    else if constexpr (std::is_same_v<T, glm::vec3>) return get_vec3(name);
+    else if constexpr (std::is_same_v<T, glm::vec4>) return get_vec4(name);
+    else if constexpr (std::is_same_v<T, glm::ivec2>) return get_ivec2(name);
+    else if constexpr (std::is_same_v<T, glm::ivec3>) return get_ivec3(name);
+    else if constexpr (std::is_same_v<T, glm::ivec4>) return get_ivec4(name);
+    else if constexpr (std::is_same_v<T, glm::uvec2>) return get_uvec2(name);
+    else if constexpr (std::is_same_v<T, glm::uvec3>) return get_uvec3(name);
+    else if constexpr (std::is_same_v<T, glm::uvec4>) return get_uvec4(name);
+    else if constexpr (std::is_same_v<T, glm::bvec2>) return glm::bvec2(get_ivec2(name));
+    else if constexpr (std::is_same_v<T, glm::bvec3>) return glm::bvec3(get_ivec3(name));
+    else if constexpr (std::is_same_v<T, glm::bvec4>) return glm::bvec4(get_ivec4(name));
+    else if constexpr (std::is_same_v<T, glm::dvec2>) return get_dvec2(name);
+    else if constexpr (std::is_same_v<T, glm::dvec3>) return get_dvec3(name);
+    else if constexpr (std::is_same_v<T, glm::dvec4>) return get_dvec4(name);
+    else if constexpr (std::is_same_v<T, glm::mat2>) return get_mat2(name);
+    else if constexpr (std::is_same_v<T, glm::mat3>) return get_mat3(name);
+    else if constexpr (std::is_same_v<T, glm::mat4>) return get_mat4(name);
+    else if constexpr (std::is_same_v<T, glm::mat2x3>) return get_mat2x3(name);
+    else if constexpr (std::is_same_v<T, glm::mat2x4>) return get_mat2x4(name);
+    else if constexpr (std::is_same_v<T, glm::mat3x2>) return get_mat3x2(name);
+    else if constexpr (std::is_same_v<T, glm::mat3x4>) return get_mat3x4(name);
+    else if constexpr (std::is_same_v<T, glm::mat4x2>) return get_mat4x2(name);
+    else if constexpr (std::is_same_v<T, glm::mat4x3>) return get_mat4x3(name);
+    else if constexpr (std::is_same_v<T, glm::dmat2>) return get_dmat2(name);
+    else if constexpr (std::is_same_v<T, glm::dmat3>) return get_dmat3(name);
+    else if constexpr (std::is_same_v<T, glm::dmat4>) return get_dmat4(name);
+    else if constexpr (std::is_same_v<T, glm::dmat2x3>) return get_dmat2x3(name);
+    else if constexpr (std::is_same_v<T, glm::dmat2x4>) return get_dmat2x4(name);
+    else if constexpr (std::is_same_v<T, glm::dmat3x2>) return get_dmat3x2(name);
+    else if constexpr (std::is_same_v<T, glm::dmat3x4>) return get_dmat3x4(name);
+    else if constexpr (std::is_same_v<T, glm::dmat4x2>) return get_dmat4x2(name);
+    else if constexpr (std::is_same_v<T, glm::dmat4x3>) return get_dmat4x3(name);
+    else static_assert(sizeof(T) == 0, "no GLSL uniform type is mirrored by this C++ type");
+}
 
 class VertexTwin {
 public:

@@ -319,7 +319,9 @@ void bind_lines(const Interface& in, const GlslVariable& u, const std::string& t
         for (const GlslVariable& m : st->members)
             bind_lines(in, m, t + "." + m.name, "std::string(" + g + ") + \"." + m.name + "\"", ind, o);
     };
-    if (u.array_size) {
+    if (u.array_size && !st && !is_sampler(u.type)) {  // a whole array of values in one call
+        o << indent << target << " = b.array<" << member_type(u.type) << ", " << u.array_size << ">(" << gl << ");\n";
+    } else if (u.array_size) {
         const std::string i = "i" + std::to_string(indent.size() / 4);  // apart from an enclosing loop's
         o << indent << "for (int " << i << " = 0; " << i << " < " << u.array_size << "; ++" << i << ")";
         o << (st ? " {\n" : "\n");
