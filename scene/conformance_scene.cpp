@@ -28,35 +28,53 @@ std::vector<JsonReader> declared_objects(JsonReader& r, const std::string& key) 
     return r.objects(key, f.min_len, f.max_len);
 }
 
-// {"name": "steps", "int": 40} | {"name": "dir", "vec2": [0.1, 0.2]} | ...
+// {"name": "steps", "int": 40} | {"name": "dir", "vec2": [0.1, 0.2]} | ...:
+// every glUniform type by its GLSL name; bool as true or false, bvecN and
+// the integer vectors as whole numbers, matrices column-major.
 Uniform read_uniform(JsonReader& r) {
     Uniform u;
     u.name = r.text("name");
+    enum Kind { Floats, Doubles, Ints, UInts, Bools };
+    const struct { const char* key; UniformType type; size_t n; Kind kind; } kinds[] = {
+        {"float", UniformType::Float, 1, Floats},     {"vec2", UniformType::Vec2, 2, Floats},
+        {"vec3", UniformType::Vec3, 3, Floats},       {"vec4", UniformType::Vec4, 4, Floats},
+        {"int", UniformType::Int, 1, Ints},           {"ivec2", UniformType::IVec2, 2, Ints},
+        {"ivec3", UniformType::IVec3, 3, Ints},       {"ivec4", UniformType::IVec4, 4, Ints},
+        {"uint", UniformType::UInt, 1, UInts},        {"uvec2", UniformType::UVec2, 2, UInts},
+        {"uvec3", UniformType::UVec3, 3, UInts},      {"uvec4", UniformType::UVec4, 4, UInts},
+        {"bool", UniformType::Int, 1, Bools},         {"bvec2", UniformType::IVec2, 2, Ints},
+        {"bvec3", UniformType::IVec3, 3, Ints},       {"bvec4", UniformType::IVec4, 4, Ints},
+        {"mat2", UniformType::Mat2, 4, Floats},       {"mat3", UniformType::Mat3, 9, Floats},
+        {"mat4", UniformType::Mat4, 16, Floats},      {"mat2x3", UniformType::Mat2x3, 6, Floats},
+        {"mat2x4", UniformType::Mat2x4, 8, Floats},   {"mat3x2", UniformType::Mat3x2, 6, Floats},
+        {"mat3x4", UniformType::Mat3x4, 12, Floats},  {"mat4x2", UniformType::Mat4x2, 8, Floats},
+        {"mat4x3", UniformType::Mat4x3, 12, Floats},  {"double", UniformType::Double, 1, Doubles},
+        {"dvec2", UniformType::DVec2, 2, Doubles},    {"dvec3", UniformType::DVec3, 3, Doubles},
+        {"dvec4", UniformType::DVec4, 4, Doubles},    {"dmat2", UniformType::DMat2, 4, Doubles},
+        {"dmat3", UniformType::DMat3, 9, Doubles},    {"dmat4", UniformType::DMat4, 16, Doubles}};
     int found = 0;
-    const struct { const char* key; UniformType type; size_t n; } kinds[] = {
-        {"float", UniformType::Float, 1},   {"vec2", UniformType::Vec2, 2},   {"vec3", UniformType::Vec3, 3},
-        {"vec4", UniformType::Vec4, 4},     {"int", UniformType::Int, 1},     {"double", UniformType::Double, 1},
-        {"dvec2", UniformType::DVec2, 2},   {"dvec3", UniformType::DVec3, 3}, {"dvec4", UniformType::DVec4, 4},
-        {"dmat2", UniformType::DMat2, 4},   {"dmat3", UniformType::DMat3, 9}, {"dmat4", UniformType::DMat4, 16}};
     for (const auto& k : kinds) {
         if (!r.has(k.key)) continue;
         ++found;
         u.type = k.type;
-        // A float's value is rounded to a float once, here; a double's and an int's are kept exactly.
-        const bool is_float = k.type == UniformType::Float || k.type == UniformType::Vec2 ||
-                              k.type == UniformType::Vec3 || k.type == UniformType::Vec4;
-        if (k.type == UniformType::Int) {
-            u.value[0] = double(r.integer(k.key));
-        } else if (k.n == 1) {
-            const double d = r.number(k.key);
-            u.value[0] = is_float ? double(float(d)) : d;
-        } else {
-            const auto v = r.numbers(k.key);
-            for (size_t i = 0; i < k.n; ++i) u.value[i] = is_float ? double(float(v[i])) : v[i];
+        if (k.kind == Bools) {
+            u.value[0] = r.boolean(k.key) ? 1.0 : 0.0;
+            continue;
+        }
+        const std::vector<double> v = k.type == UniformType::Int ? std::vector<double>{double(r.integer(k.key))}
+                                      : k.n == 1                ? std::vector<double>{r.number(k.key)}
+                                                                : r.numbers(k.key);
+        for (size_t i = 0; i < k.n; ++i) {
+            // A float's value is rounded to a float once, here; a double's
+            // and an integer's are kept exactly (the space bounds them).
+            if ((k.kind == Ints || k.kind == UInts) && v[i] != std::floor(v[i]))
+                throw InputError("field '" + r.path() + "." + k.key + "': " + k.key + " holds whole numbers");
+            u.value[i] = k.kind == Floats ? double(float(v[i])) : v[i];
         }
     }
     if (found != 1)
-        throw InputError("field '" + r.path() + "' needs exactly one of float, vec2, vec3, vec4, int, double, dvec2, dvec3, dvec4, dmat2, dmat3, dmat4");
+        throw InputError("field '" + r.path() + "' needs exactly one value: float, vecN, int, ivecN, uint, uvecN, bool, "
+                         "bvecN, matN, matCxR, double, dvecN or dmatN");
     r.finish();
     return u;
 }

@@ -6,6 +6,10 @@
 #include "scene/json_reader.h"
 #include "scene/scene_spaces.h"
 
+#include <initializer_list>
+#include <string>
+#include <tuple>
+
 namespace st {
 
 namespace {
@@ -54,6 +58,32 @@ ParamSpace pass_fields() {
     s.integer("uniforms[].int", INT32_MIN, INT32_MAX, nullptr, "an int's value")
         .draws(-100, 100).edge({0, 1, -1})
         .only_if_present();
+    for (int n = 2; n <= 4; ++n)
+        s.numbers("uniforms[].ivec" + std::to_string(n), n, n, INT32_MIN, INT32_MAX, nullptr,
+                  "an ivec" + std::to_string(n) + "'s value, whole numbers")
+            .draws(-100, 100).edge({0, 1})
+            .only_if_present();
+    s.number("uniforms[].uint", 0, 4294967295.0, nullptr, "a uint's value, a whole number (glUniform1ui)")
+        .draws(0, 100).edge({0, 1, 4294967295.0})
+        .only_if_present();
+    for (int n = 2; n <= 4; ++n)
+        s.numbers("uniforms[].uvec" + std::to_string(n), n, n, 0, 4294967295.0, nullptr,
+                  "a uvec" + std::to_string(n) + "'s value, whole numbers")
+            .draws(0, 100).edge({0, 1})
+            .only_if_present();
+    s.boolean("uniforms[].bool", false, "a bool's value (set as an int, glUniform1i)").only_if_present();
+    for (int n = 2; n <= 4; ++n)
+        s.numbers("uniforms[].bvec" + std::to_string(n), n, n, 0, 1, nullptr,
+                  "a bvec" + std::to_string(n) + "'s value: 0 or 1 each (set as an ivec" + std::to_string(n) + ")")
+            .draws(0, 1).edge({0, 1})
+            .only_if_present();
+    for (const auto& [name, c, rows] : std::initializer_list<std::tuple<const char*, int, int>>{
+             {"mat2", 2, 2}, {"mat3", 3, 3}, {"mat4", 4, 4}, {"mat2x3", 2, 3}, {"mat2x4", 2, 4}, {"mat3x2", 3, 2},
+             {"mat3x4", 3, 4}, {"mat4x2", 4, 2}, {"mat4x3", 4, 3}})
+        s.numbers(std::string("uniforms[].") + name, size_t(c * rows), size_t(c * rows), -kMaxAttribute, kMaxAttribute,
+                  nullptr, std::string("a ") + name + "'s value, column-major (glUniformMatrix*fv)")
+            .draws(-10, 10).edge({0, 1})
+            .only_if_present();
     s.number("uniforms[].double", -kMaxAttribute, kMaxAttribute, nullptr, "a double's value (glUniform1d)")
         .draws(-10, 10).edge({0, 1, -1})
         .only_if_present();

@@ -90,6 +90,45 @@ private:
     int count_ = 0;
 };
 
+class UniformTypesFragment final : public FragmentProgram<UniformTypesFragment> {  // uniform_types.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    struct Light {  // GLSL struct Light
+        glm::vec3 colour{0.0f};
+        float power = 0.0f;
+        int kind = 0;
+        bool on = false;
+    };
+    struct Mixed {  // the std140 block Mixed, instance mixed
+        float a = 0.0f;
+        glm::vec3 b{0.0f};
+        int c = 0;
+        glm::mat3 d{0.0f};
+        bool e = false;
+        glm::uvec2 f{0u};
+        std::array<float, 3> g{};
+        glm::mat2x3 h{0.0f};
+    };
+    std::array<glm::vec3, 4> palette_{};
+    std::array<Light, 2> lights_{};
+    int count_ = 0;
+    uint32_t mask_ = 0;
+    bool flip_ = false;
+    glm::bvec2 axes_{false};
+    glm::ivec3 steps_{0};
+    glm::uvec2 bits_{0u};
+    glm::mat2 rot_{0.0f};
+    glm::mat3 basis_{0.0f};
+    glm::mat2x3 skew_{0.0f};
+    glm::mat3x2 squash_{0.0f};
+    glm::mat4x3 affine_{0.0f};
+    Mixed mixed_;
+};
+
 // builtins_vertex.vert: the built-ins in the vertex stage, per cell.
 class BuiltinsVertex final : public VertexTwin {  // builtins_vertex.vert
 public:
