@@ -55,6 +55,8 @@ void add_builtin_twins(TwinRegistry& r) {
     r.add_fragment("varyings", [] { return std::make_unique<VaryingsFragment>(); });
     r.add_fragment("uniform_block", [] { return std::make_unique<UniformBlockFragment>(); });
     r.add_fragment("uniform_types", [] { return std::make_unique<UniformTypesFragment>(); });
+    r.add_vertex("unlocated", [] { return std::make_unique<UnlocatedVertex>(); });
+    r.add_fragment("unlocated", [] { return std::make_unique<UnlocatedFragment>(); });
     r.add_fragment("probe_demo", [] { return std::make_unique<ProbeDemoFragment>(); });
     r.add_fragment("loop_budget", [] { return std::make_unique<LoopBudgetFragment>(); });
     r.add_fragment("sample_implicit", [] { return std::make_unique<SampleImplicitFragment>(); });

@@ -177,6 +177,9 @@ Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSiz
         throw InputError("field '" + r.field("clear") + "': a pass that keeps its colour cannot test depth");
     read_blend(r, draw.state);
     draw.vertices.attribute_count = 3;  // position, colour, uv
+    // Bound by name on the GL side, so that a vertex program without
+    // locations (unlocated.vert) gets them too.
+    draw.vertices.names = {"position", "colour", "uv"};
     // The viewport as the pipeline takes it (0 width: the whole target).
     const Viewport viewport{float(pass.viewport_x), float(pass.viewport_y),
                             float(pass.viewport_width ? pass.viewport_width : pass.width),

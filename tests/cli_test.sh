@@ -446,6 +446,9 @@ PY
       "$bin" render conformance-loop-exit --backend cpu --set textures.0.sampler=texture0
     expect_refused "interface: a uniform set twice" "uniform 'dir' is set twice" \
       "$bin" render conformance-loop-exit --set 'uniforms.2={"name":"dir","float":1}'
+    expect_refused "interface: an input no vertex output meets" \
+      "unlocated.frag reads 'vUV', which textured.vert does not write" \
+      "$bin" compare conformance-unlocated --set vertex=textured
     # Diffusion-profile scenes: the sample count, the table, the material's layers.
     expect_bad_input "profile: no samples" "$bin" render profile-parchment-multipole --set gather.samples=0
     expect_bad_input "profile: too many samples" "$bin" render profile-parchment-multipole --set gather.samples=5000

@@ -243,16 +243,9 @@ void check_frame_uniforms(const Frame& frame, const std::vector<std::string>& gl
             } catch (const std::runtime_error& e) {  // no such file
                 throw InputError(e.what());
             }
-            // A program GL cannot compile fails here as it would at render.
-            if (active) {
-                const auto key = std::make_pair(draw.vertex, draw.fragment);
-                auto it = programs.find(key);
-                if (it == programs.end()) it = programs.emplace(key, active(draw.vertex, draw.fragment)).first;
-                program = &it->second;
-            }
-            check_draw_uniforms(draw, *vs, *fs, program);
             // The twins' slots against the GLSL's inputs and outputs, once per
-            // program and attribute count (a program without twins runs on GL only).
+            // program and attribute columns (a program without twins runs on GL
+            // only); before GL links it, whose log says less.
             const auto key = std::make_tuple(draw.vertex, draw.fragment, draw.vertices.attribute_count, draw.vertices.names);
             if (!twins_checked.count(key)) {
                 const std::unique_ptr<VertexTwin> vt = make_vertex_twin(draw.vertex);
@@ -260,6 +253,14 @@ void check_frame_uniforms(const Frame& frame, const std::vector<std::string>& gl
                 if (vt && ft) check_twin_varyings(*vs, *vt, *fs, *ft, draw.vertices);
                 twins_checked.insert(key);
             }
+            // A program GL cannot compile fails here as it would at render.
+            if (active) {
+                const auto pair = std::make_pair(draw.vertex, draw.fragment);
+                auto it = programs.find(pair);
+                if (it == programs.end()) it = programs.emplace(pair, active(draw.vertex, draw.fragment)).first;
+                program = &it->second;
+            }
+            check_draw_uniforms(draw, *vs, *fs, program);
         }
 }
 

@@ -170,8 +170,20 @@ void check_twin_varyings(const GlslStage& vs, const VertexTwin& vertex_twin, con
                          "; a fragment twin writes one, at location 0");
 
     const std::vector<Varying> inputs = interface_of(fs, "in");
-    const std::map<int, const Varying*> in_slots = slots_of(inputs, fragment_twin.input_names(), ftwin, ffile, "input");
     const std::vector<Varying> vs_outputs = interface_of(vs, "out");
+    // What GL's link would refuse with a page of log: an input the fragment
+    // shader uses that no vertex output meets, by location or by name.
+    for (const Varying& v : inputs) {
+        if (!v.used) continue;
+        const bool met = std::any_of(vs_outputs.begin(), vs_outputs.end(), [&](const Varying& o) {
+            return v.location >= 0 && o.location >= 0 ? o.location == v.location : o.name == v.name;
+        });
+        if (!met)
+            throw InputError(ffile + " reads '" + v.name + "'" +
+                             (v.location >= 0 ? " at location " + std::to_string(v.location) : std::string()) + ", which " +
+                             vfile + " does not write (its outputs: " + slot_list(vs_outputs) + ")");
+    }
+    const std::map<int, const Varying*> in_slots = slots_of(inputs, fragment_twin.input_names(), ftwin, ffile, "input");
     const std::map<int, const Varying*> out_slots =
         slots_of(vs_outputs, vertex_twin.output_names(), vtwin, vfile, "output");
     // The same name in both twins' slots.

@@ -19,7 +19,9 @@
 // - an input the fragment shader's code uses whose slot the twin's
 //   inputs_read() leaves out (it would read NaN), or that the twin cannot
 //   place (no location and no name);
-// - a slot the fragment twin reads that the vertex twin does not write;
+// - a slot the fragment twin reads that the vertex twin does not write, and
+//   an input the fragment shader uses that no vertex output meets (by
+//   location, or by name where either has none), which GL's link refuses;
 // - a vertex input at a location past the draw's attributes; where the
 //   draw names its attributes (VertexArray::names), a name the vertex
 //   shader does not declare as an input, or declares at another location,

@@ -84,6 +84,11 @@ TEST(VaryingInterface, NamedSlotsAgainstAShaderWithoutLocations) {
     ft.names = vt.names;
     ft.read = reads(0, "x") | reads(1, "xyz") | reads(2, "xyz");
     EXPECT_EQ(refusal(kPbrVert, vt, kPbrFrag, ft), "");
+    // An input the vertex shader does not write (GL's link would refuse it).
+    const std::string renamed = std::string(kPbrVert).replace(std::string(kPbrVert).find("out vec3 Normal;"), 16,
+                                                              "out vec3 Normals;");
+    EXPECT_EQ(refusal(renamed.c_str(), vt, kPbrFrag, ft), "pbr.frag reads 'Normal', which pbr.vert does not write (its "
+                                                          "outputs: TexCoords, WorldPos, Normals)");
     // A name the shader does not have.
     ft.names[2] = "Normals";
     EXPECT_EQ(refusal(kPbrVert, vt, kPbrFrag, ft), "the twin of pbr.frag names slot 2 'Normals', which pbr.frag does not "

@@ -129,6 +129,26 @@ private:
     Mixed mixed_;
 };
 
+// unlocated.vert and unlocated.frag: GLSL 3.30 without locations; the
+// twins name their slots, by which every run matches them to the GLSL.
+class UnlocatedVertex final : public VertexTwin {  // unlocated.vert
+public:
+    int varying_count() const override { return 2; }
+    SlotNames output_names() const override { return {"vColour", "vUV"}; }
+    void run(const glm::vec4* attributes, VertexOut& out) const override;
+};
+
+class UnlocatedFragment final : public FragmentProgram<UnlocatedFragment> {  // unlocated.frag
+public:
+    void bind(const Bindings& b) override { tint_ = b.get<glm::vec3>("tint"); }
+    SlotNames input_names() const override { return {"vColour", "vUV"}; }
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    glm::vec3 tint_{0.0f};
+};
+
 // builtins_vertex.vert: the built-ins in the vertex stage, per cell.
 class BuiltinsVertex final : public VertexTwin {  // builtins_vertex.vert
 public:
