@@ -179,6 +179,15 @@ struct RenderTarget {
     int levels = 1;                      // level L is max(1, size >> L)
 };
 
+// A fragment output at location 1, 2, ... of a pass (several render
+// targets, glDrawBuffers): one level of a named target, the pass's size.
+struct PassOutput {
+    std::string target;
+    int level = 0;
+    TargetFormat format = TargetFormat::RGBA32F;  // its target's, as Pass::format
+};
+inline constexpr int kMaxFragmentOutputs = 4;  // locations 0-3
+
 struct Pass {
     // Empty: the frame's image (RGBA32F, width x height). Else one level of
     // a named target, whose size width x height must be.
@@ -191,6 +200,9 @@ struct Pass {
     bool clear = true;                   // else the level keeps what earlier passes left
     glm::vec4 clear_colour{0, 0, 0, 0};
     float clear_depth = 1.0f;
+    // Locations 1, 2, ... (location 0 is the colour buffer above), each
+    // cleared (or kept) and blended as it is, with the depth test's result.
+    std::vector<PassOutput> outputs;
     std::vector<DrawCall> draws;
 };
 

@@ -27,7 +27,7 @@ namespace st {
     X(BufferSubData) X(CheckFramebufferStatus) X(Clear) X(ClearColor) X(ClearDepth) X(CompileShader)        \
     X(CreateProgram) X(CreateShader) X(DeleteBuffers) X(DeleteFramebuffers) X(DeleteProgram)                \
     X(DeleteRenderbuffers) X(DeleteSamplers) X(DeleteShader) X(DeleteTextures) X(DeleteVertexArrays)        \
-    X(DepthFunc) X(DepthMask) X(Disable) X(DrawArrays) X(DrawElements) X(Enable) X(EnableVertexAttribArray) \
+    X(DepthFunc) X(DepthMask) X(Disable) X(DrawBuffers) X(DrawArrays) X(DrawElements) X(Enable) X(EnableVertexAttribArray) \
     X(Finish) X(FramebufferRenderbuffer) X(FramebufferTexture2D) X(GenBuffers) X(GenFramebuffers)          \
     X(GenRenderbuffers) X(GenSamplers) X(GenTextures) X(GenVertexArrays) X(GetError) X(GetProgramInfoLog)  \
     X(GetAttribLocation) X(GetProgramiv) X(GetShaderInfoLog) X(GetShaderiv) X(GetString) X(GetUniformLocation) X(LinkProgram)    \

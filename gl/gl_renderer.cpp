@@ -274,6 +274,8 @@ struct GlRenderer::State {
     struct Target {
         GLuint fbo = 0, colour = 0, depth = 0;
         bool owned = true;
+        // A pass with several outputs draws through an FBO of its own.
+        GLuint outputs_fbo = 0, outputs_depth = 0;
         int width = 0, height = 0;
         int viewport[4] = {0, 0, 0, 0};
         bool clear = true;
@@ -308,6 +310,10 @@ struct GlRenderer::State {
                 gl.DeleteTextures(GLsizei(d.owned_textures.size()), d.owned_textures.data());
                 for (GLuint sampler : d.samplers)
                     if (sampler) gl.DeleteSamplers(1, &sampler);
+            }
+            if (t.outputs_fbo) {
+                gl.DeleteFramebuffers(1, &t.outputs_fbo);
+                gl.DeleteRenderbuffers(1, &t.outputs_depth);
             }
             if (t.owned) {
                 gl.DeleteFramebuffers(1, &t.fbo);
@@ -447,6 +453,31 @@ void GlRenderer::prepare(const Frame& frame) {
             frame_owner[{t.width, t.height}] = state_->passes.size();
         }
 
+        if (!pass.outputs.empty()) {
+            // Several render targets: the pass's colour buffer at attachment
+            // 0 and each output's level at 1, 2, ..., as glDrawBuffers maps
+            // fragment outputs 0, 1, 2, ... to them, with a depth buffer.
+            gl.GenRenderbuffers(1, &t.outputs_depth);
+            gl.BindRenderbuffer(GL_RENDERBUFFER, t.outputs_depth);
+            gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, t.width, t.height);
+            gl.GenFramebuffers(1, &t.outputs_fbo);
+            gl.BindFramebuffer(GL_FRAMEBUFFER, t.outputs_fbo);
+            gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.colour,
+                                    pass.target.empty() ? 0 : pass.level);
+            std::vector<GLenum> buffers = {GL_COLOR_ATTACHMENT0};
+            for (const PassOutput& o : pass.outputs) {
+                const auto n = state_->named.find(o.target);
+                if (n == state_->named.end()) throw std::runtime_error("GL: a pass output names unknown target " + o.target);
+                const GLenum attachment = GLenum(GL_COLOR_ATTACHMENT0 + buffers.size());
+                gl.FramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, n->second.texture, o.level);
+                buffers.push_back(attachment);
+            }
+            gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.outputs_depth);
+            gl.DrawBuffers(GLsizei(buffers.size()), buffers.data());
+            if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+                throw std::runtime_error("GL: incomplete framebuffer for a pass with " + std::to_string(buffers.size()) +
+                                         " outputs");
+        }
         for (const DrawCall& dc : pass.draws) {
             State::Draw d;
             d.program = program(dc.vertex, dc.fragment);
@@ -525,7 +556,7 @@ void GlRenderer::execute() {
     gl.Disable(GL_DITHER);
     gl.Disable(GL_CULL_FACE);
     for (State::Target& t : state_->passes) {
-        gl.BindFramebuffer(GL_FRAMEBUFFER, t.fbo);
+        gl.BindFramebuffer(GL_FRAMEBUFFER, t.outputs_fbo ? t.outputs_fbo : t.fbo);
         gl.Viewport(t.viewport[0], t.viewport[1], t.viewport[2], t.viewport[3]);
         gl.DepthMask(GL_TRUE);
         gl.ClearColor(t.clear_colour.r, t.clear_colour.g, t.clear_colour.b, t.clear_colour.a);

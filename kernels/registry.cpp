@@ -55,6 +55,8 @@ void add_builtin_twins(TwinRegistry& r) {
     r.add_fragment("varyings", [] { return std::make_unique<VaryingsFragment>(); });
     r.add_fragment("uniform_block", [] { return std::make_unique<UniformBlockFragment>(); });
     r.add_fragment("uniform_types", [] { return std::make_unique<UniformTypesFragment>(); });
+    r.add_fragment("outputs", [] { return std::make_unique<OutputsFragment>(); });
+    r.add_fragment("outputs_two", [] { return std::make_unique<OutputsTwoFragment>(); });
     r.add_vertex("unlocated", [] { return std::make_unique<UnlocatedVertex>(); });
     r.add_fragment("unlocated", [] { return std::make_unique<UnlocatedFragment>(); });
     r.add_fragment("probe_demo", [] { return std::make_unique<ProbeDemoFragment>(); });

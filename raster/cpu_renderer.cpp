@@ -35,6 +35,7 @@ struct CpuRenderer::Impl {
     std::vector<std::vector<PreparedDraw>> passes;  // [pass][draw]
     std::unique_ptr<Framebuffer> result;   // the frame's image
     std::unique_ptr<Framebuffer> target_fb;  // a named target's level while a pass draws into it
+    std::vector<std::unique_ptr<Framebuffer>> output_fbs;  // Pass::outputs' levels while a pass draws into them
     // Named targets as the passes so far left them: per level, RGBA texels
     // with row 0 at the bottom (halves already rounded for RGBA16F).
     std::map<std::string, std::vector<std::vector<float>>> targets;
@@ -63,6 +64,15 @@ void CpuRenderer::prepare(const Frame& frame) {
     impl_->frame = frame;
     impl_->passes.clear();
     for (const Pass& pass : impl_->frame.passes) {
+        if (pass.outputs.size() > size_t(kMaxFragmentOutputs - 1))
+            throw std::runtime_error("a pass draws into at most " + std::to_string(kMaxFragmentOutputs) + " targets");
+        for (const PassOutput& o : pass.outputs) {
+            const RenderTarget* rt = impl_->target(o.target);
+            if (!rt || o.level < 0 || o.level >= rt->levels || std::max(1, rt->width >> o.level) != pass.width ||
+                std::max(1, rt->height >> o.level) != pass.height || rt->format != o.format)
+                throw std::runtime_error("a pass output names target '" + o.target + "' level " +
+                                         std::to_string(o.level) + ", which is not a level of the pass's size and format");
+        }
         auto& draws = impl_->passes.emplace_back();
         for (const DrawCall& call : pass.draws) {
             PreparedDraw& d = draws.emplace_back();
@@ -173,6 +183,16 @@ void CpuRenderer::execute() {
         if (pass.target.empty() && !pass.clear && (resized || !frame_started))
             fb->load_texels(std::vector<float>(size_t(pass.width) * size_t(pass.height) * 4, 0.0f));
         if (pass.target.empty()) frame_started = true;
+        // Locations 1, 2, ...: their targets' levels, kept or cleared as the pass's.
+        std::vector<Framebuffer*> outputs;
+        m.output_fbs.resize(std::max(m.output_fbs.size(), pass.outputs.size()));
+        for (size_t k = 0; k < pass.outputs.size(); ++k) {
+            std::unique_ptr<Framebuffer>& o = m.output_fbs[k];
+            if (!o || o->width != pass.width || o->height != pass.height)
+                o = std::make_unique<Framebuffer>(pass.width, pass.height);
+            if (!pass.clear) o->load_texels(m.targets.at(pass.outputs[k].target)[size_t(pass.outputs[k].level)]);
+            outputs.push_back(o.get());
+        }
         for (PreparedDraw& d : draws) m.run_vertex_stage(d, viewport);
         const auto t1 = Clock::now();
         m.binner.run(draws, pass.width, pass.height, viewport, m.pool);
@@ -188,9 +208,11 @@ void CpuRenderer::execute() {
         // at the end; tiles are independent, so the order changes no pixel.
         const std::vector<int>& order = m.binner.tiles_by_load();
         m.pool.run(int(order.size()), [&](int i, int worker) {
-            m.tile_shaders[size_t(worker)].shade(order[size_t(i)], m.binner, draws, pass, *fb);
+            m.tile_shaders[size_t(worker)].shade(order[size_t(i)], m.binner, draws, pass, *fb, outputs);
         });
         if (!pass.target.empty()) m.targets.at(pass.target)[size_t(pass.level)] = fb->texels();
+        for (size_t k = 0; k < pass.outputs.size(); ++k)
+            m.targets.at(pass.outputs[k].target)[size_t(pass.outputs[k].level)] = outputs[k]->texels();
         const auto t3 = Clock::now();
 
         StageTimes tiles;

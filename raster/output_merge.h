@@ -84,22 +84,25 @@ inline V blend(const DrawState& state, const V& src, const V& dst) {
     return src;
 }
 
-// Depth test (GL_LESS against the float depth buffer, written when
-// depth_write) and blending of the lanes in `live`, group by group: the
-// destination of lanes [8g, 8g + 8) is read from in_colour[g] and
-// in_depth[g] and written to out_colour[g] and out_depth[g] (the same
-// places, or a group's clear values in and the framebuffer out when the
-// tile has not written it yet). Colour is channel by channel, 8 floats
-// apart.
-inline void merge_lanes(const DrawState& state, bool rgba16f, const Vec4& src, Float z, Mask live,
-                        const float* const* in_colour, const float* const* in_depth, float* const* out_colour,
-                        float* const* out_depth) {
-    Mask pass = live;
-    if (state.depth_test) {
-        const Float stored = Float::load_groups(in_depth);
-        pass = pass && z < stored;
-        if (state.depth_write) select(pass, z, stored).store_groups(out_depth);
-    }
+// The depth test (GL_LESS against the float depth buffer, written when
+// depth_write) of the lanes in `live`, group by group: the destination of
+// lanes [8g, 8g + 8) is read from in_depth[g] and written to out_depth[g]
+// (the same place, or the group's clear values in and the framebuffer out
+// when the tile has not written it yet). Returns the lanes that pass.
+ST_INLINE Mask depth_tested(const DrawState& state, Float z, Mask live, const float* const* in_depth,
+                         float* const* out_depth) {
+    if (!state.depth_test) return live;
+    const Float stored = Float::load_groups(in_depth);
+    const Mask pass = live && z < stored;
+    if (state.depth_write) select(pass, z, stored).store_groups(out_depth);
+    return pass;
+}
+
+// Blending of `src` into one colour buffer for the lanes in `pass`, read
+// from in_colour[g] and written to out_colour[g] as above, channel by
+// channel, 8 floats apart.
+ST_INLINE void merge_colour(const DrawState& state, bool rgba16f, const Vec4& src, Mask pass,
+                         const float* const* in_colour, float* const* out_colour) {
     const float* in[4][kLanes / 8];
     float* out[4][kLanes / 8];
     for (int c = 0; c < 4; ++c)
@@ -118,6 +121,13 @@ inline void merge_lanes(const DrawState& state, bool rgba16f, const Vec4& src, F
     result.y.store_groups(out[1]);
     result.z.store_groups(out[2]);
     result.w.store_groups(out[3]);
+}
+
+// Both, for a pass with one colour buffer.
+ST_INLINE void merge_lanes(const DrawState& state, bool rgba16f, const Vec4& src, Float z, Mask live,
+                        const float* const* in_colour, const float* const* in_depth, float* const* out_colour,
+                        float* const* out_depth) {
+    merge_colour(state, rgba16f, src, depth_tested(state, z, live, in_depth, out_depth), in_colour, out_colour);
 }
 
 }  // namespace st

@@ -25,7 +25,7 @@ constexpr size_t kMaxTileGroups = 512;
 }  // namespace
 
 void TileShader::shade(int tile, const Binner& binner, const std::vector<PreparedDraw>& draws, const Pass& pass,
-                       Framebuffer& fb) {
+                       Framebuffer& fb, const std::vector<Framebuffer*>& outputs) {
     const int tiles_x = binner.tiles_x();
     const TileRect rect{(tile % tiles_x) * kTileSize, (tile / tiles_x) * kTileSize,
                         std::min(pass.width, (tile % tiles_x + 1) * kTileSize),
@@ -38,6 +38,17 @@ void TileShader::shade(int tile, const Binner& binner, const std::vector<Prepare
         std::fill_n(clear_colour_ + c * kGroupLanes, kGroupLanes,
                     rgba16f_ ? rgba16f_stored(pass.clear_colour[c]) : pass.clear_colour[c]);
     std::fill_n(clear_depth_, kGroupLanes, pass.clear_depth);
+    // glClear clears every draw buffer to the one colour, each rounded as
+    // its format stores it.
+    outputs_.resize(outputs.size());
+    for (size_t k = 0; k < outputs.size(); ++k) {
+        Output& o = outputs_[k];
+        o.fb = outputs[k];
+        o.rgba16f = k < pass.outputs.size() && pass.outputs[k].format == TargetFormat::RGBA16F;
+        for (int c = 0; c < 4; ++c)
+            std::fill_n(o.clear_colour + c * kGroupLanes, kGroupLanes,
+                        o.rgba16f ? rgba16f_stored(pass.clear_colour[c]) : pass.clear_colour[c]);
+    }
     // Depth is only ever read by a depth test: in a pass without one it is
     // neither cleared nor written (read_back() returns colour only).
     depth_used_ = std::any_of(draws.begin(), draws.end(), [](const PreparedDraw& d) { return d.call->state.depth_test; });
@@ -77,6 +88,7 @@ void TileShader::clear_unwritten(const TileRect& rect, Framebuffer& fb) const {
                 const size_t b = fb.block(x, y);
                 std::copy_n(clear_colour_, 4 * kGroupLanes, fb.group_colour(b, half));
                 if (depth_used_) std::copy_n(clear_depth_, kGroupLanes, fb.group_depth(b, half));
+                for (const Output& o : outputs_) std::copy_n(o.clear_colour, 4 * kGroupLanes, o.fb->group_colour(b, half));
             }
 }
 
@@ -109,6 +121,10 @@ size_t TileShader::shade_groups(const std::vector<PreparedDraw>& draws) {
         // writes every field that is read.
         if (shaded == shaded_.size()) shaded_.emplace_back();
         ShadedCall& out = shaded_[shaded];
+        if (!outputs_.empty()) {
+            if (shaded == output_values_.size()) output_values_.emplace_back();
+            out.result.outputs = output_values_[shaded].data();
+        }
         d.fragment->shade(inputs_, out.result);
         out.live = simd::bits(and_not(inputs_.covered, out.result.discarded));
         out.depth = inputs_.frag_coord.z;
@@ -128,19 +144,26 @@ void TileShader::merge(size_t calls, const std::vector<PreparedDraw>& draws, con
         const float* in_depth[kGroupsPerCall];
         float* out_colour[kGroupsPerCall];
         float* out_depth[kGroupsPerCall];
+        // Where each group sits, for the other colour buffers (none: a scratch copy).
+        size_t block[kGroupsPerCall];
+        int half[kGroupsPerCall];
+        bool fresh[kGroupsPerCall];  // not written before this call: reads the clear value
         for (int g = 0; g < kGroupsPerCall; ++g) {
             // A group without a live lane (padding, or all discarded) loads
             // and stores a scratch copy, never the framebuffer.
             if (!(call.live >> (g * kGroupLanes) & 0xff)) {
                 in_colour[g] = out_colour[g] = spare_colour_;
                 in_depth[g] = out_depth[g] = spare_depth_;
+                half[g] = -1;
                 continue;
             }
             const LaneGroup& group = groups_[call.first + uint32_t(g)].group;
             const size_t b = fb.block(group.x, group.y);
+            block[g] = b, half[g] = group.half;
             out_colour[g] = fb.group_colour(b, group.half);
             out_depth[g] = fb.group_depth(b, group.half);
             bool& written = written_[tile_group(group, rect)];
+            fresh[g] = !written;
             if (written) {
                 in_colour[g] = out_colour[g];
                 in_depth[g] = out_depth[g];
@@ -151,8 +174,23 @@ void TileShader::merge(size_t calls, const std::vector<PreparedDraw>& draws, con
                 written = true;
             }
         }
-        merge_lanes(state, rgba16f_, call.result.colour, call.depth, Mask::from_bits(call.live), in_colour, in_depth,
-                    out_colour, out_depth);
+        if (outputs_.empty()) {  // one colour buffer: the whole merge in one inlined step
+            merge_lanes(state, rgba16f_, call.result.colour, call.depth, Mask::from_bits(call.live), in_colour,
+                        in_depth, out_colour, out_depth);
+            continue;
+        }
+        const Mask pass = depth_tested(state, call.depth, Mask::from_bits(call.live), in_depth, out_depth);
+        merge_colour(state, rgba16f_, call.result.colour, pass, in_colour, out_colour);
+        // The other colour buffers take the same lanes, blended the same way.
+        for (size_t o = 0; o < outputs_.size(); ++o) {
+            const Output& target = outputs_[o];
+            for (int g = 0; g < kGroupsPerCall; ++g) {
+                if (half[g] < 0) continue;  // the scratch copy, as above
+                out_colour[g] = target.fb->group_colour(block[g], half[g]);
+                in_colour[g] = fresh[g] ? target.clear_colour : out_colour[g];
+            }
+            merge_colour(state, target.rgba16f, output_values_[k][o], pass, in_colour, out_colour);
+        }
     }
 }
 

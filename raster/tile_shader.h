@@ -5,6 +5,7 @@
 // TileShader and its scratch; a tile is only ever shaded by one worker.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -22,8 +23,10 @@ namespace st {
 // the per-worker shaders, side by side in one vector, never share a line.
 class alignas(128) TileShader {
 public:
+    // `fb` is the pass's colour buffer (location 0) and depth; `outputs`
+    // its buffers for locations 1, 2, ... (Pass::outputs), often none.
     void shade(int tile, const Binner& binner, const std::vector<PreparedDraw>& draws, const Pass& pass,
-               Framebuffer& fb);
+               Framebuffer& fb, const std::vector<Framebuffer*>& outputs);
 
     StageTimes times;  // raster, fragment and output time of the tiles shaded since reset
 
@@ -58,6 +61,18 @@ private:
     float clear_colour_[4 * kGroupLanes] = {}, clear_depth_[kGroupLanes] = {};
     bool depth_used_ = false;  // some draw of the pass tests depth
     bool rgba16f_ = false;     // the colour buffer stores halves
+
+    // The pass's colour buffers at locations 1, 2, ..., each with its own
+    // format and clear value, and per shaded call the twin's values for
+    // them (apart from ShadedCall, so that a pass with one target keeps its
+    // shaded results as small as they were).
+    struct Output {
+        Framebuffer* fb = nullptr;
+        bool rgba16f = false;
+        float clear_colour[4 * kGroupLanes] = {};
+    };
+    std::vector<Output> outputs_;
+    std::vector<std::array<Vec4, kMaxFragmentOutputs - 1>> output_values_;  // grows only
 
     std::vector<BlockCoverage> blocks_;
     std::vector<TileGroup> groups_;

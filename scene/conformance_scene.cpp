@@ -134,15 +134,19 @@ void add_cells(int columns, int rows, DrawCall& draw) {
         }
 }
 
+const RenderTarget& target_named(const std::vector<RenderTarget>& targets, const std::string& name,
+                                 const std::string& field) {
+    for (const RenderTarget& t : targets)
+        if (t.name == name) return t;
+    throw InputError("field '" + field + "': no target named '" + name + "'");
+}
+
 Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSize image, TexelBudget& budget) {
     Pass pass;
     SceneSize size = image;
     if (r.has("target")) {
         pass.target = r.text("target");
-        const RenderTarget* rt = nullptr;
-        for (const RenderTarget& t : targets)
-            if (t.name == pass.target) rt = &t;
-        if (!rt) throw InputError("field '" + r.field("target") + "': no target named '" + pass.target + "'");
+        const RenderTarget* rt = &target_named(targets, pass.target, r.field("target"));
         pass.level = r.integer_in("level", 0, rt->levels - 1);
         pass.format = rt->format;
         size = {std::max(1, rt->width >> pass.level), std::max(1, rt->height >> pass.level)};
@@ -159,6 +163,24 @@ Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSiz
         pass.viewport_x = int(v[0]), pass.viewport_y = int(v[1]);
         pass.viewport_width = int(v[2]), pass.viewport_height = int(v[3]);
     }
+    if (r.has("outputs"))
+        for (JsonReader& o : declared_objects(r, "outputs")) {
+            PassOutput out;
+            out.target = o.text("target");
+            const RenderTarget* rt = &target_named(targets, out.target, o.field("target"));
+            out.level = o.integer_in("level", 0, rt->levels - 1);
+            out.format = rt->format;
+            if (std::max(1, rt->width >> out.level) != size.width || std::max(1, rt->height >> out.level) != size.height)
+                throw InputError("field '" + o.field("target") + "': '" + out.target + "' level " +
+                                 std::to_string(out.level) + " is not the pass's " + std::to_string(size.width) + "x" +
+                                 std::to_string(size.height));
+            if (out.target == pass.target || std::any_of(pass.outputs.begin(), pass.outputs.end(), [&](const PassOutput& p) {
+                    return p.target == out.target;
+                }))
+                throw InputError("field '" + o.field("target") + "': the pass draws into '" + out.target + "' twice");
+            o.finish();
+            pass.outputs.push_back(out);
+        }
     pass.clear = r.boolean("clear");
     const auto c = r.numbers("clear_colour");
     pass.clear_colour = glm::vec4(float(c[0]), float(c[1]), float(c[2]), float(c[3]));
@@ -224,12 +246,15 @@ void check_target_reads(const Frame& frame, const std::vector<std::string>& wher
                 bool known = false;
                 for (const RenderTarget& t : frame.targets) known |= t.name == name;
                 if (!known) throw InputError("field '" + field + "': no target named '" + name + "'");
-                if (name == pass.target)
+                const bool writes = name == pass.target || std::any_of(pass.outputs.begin(), pass.outputs.end(),
+                                                                       [&](const PassOutput& o) { return o.target == name; });
+                if (writes)
                     throw InputError("field '" + field + "': a pass cannot read the target it writes ('" + name + "')");
                 if (!written.count(name))
                     throw InputError("field '" + field + "': target '" + name + "' is not written by an earlier pass");
             }
         if (!pass.target.empty()) written.insert(pass.target);
+        for (const PassOutput& o : pass.outputs) written.insert(o.target);
     }
     for (size_t t = 0; t < frame.targets.size(); ++t)
         if (!written.count(frame.targets[t].name))

@@ -19,6 +19,13 @@ ParamSpace pass_fields() {
     ParamSpace s("pass");
     s.text("target", nullptr, "a name from `targets` (a pass before the scene's own; the scene's own draws the image)");
     s.integer("level", 0, 12, 0, "the level of `target` drawn, below its `levels`").edge({0, 1}).only_if_present();
+    s.object("outputs", false,
+             "several render targets: the targets the fragment outputs at locations 1, 2, 3 draw into, each the "
+             "size of the pass (location 0 is `target`, or the image), cleared and blended as it is",
+             0, 3)
+        .only_if_present();
+    s.text("outputs[].target", "required", "a name from `targets`");
+    s.integer("outputs[].level", 0, 12, 0, "the level drawn, below its target's `levels`").edge({0}).only_if_present();
     s.numbers("viewport", 4, 4, 0, 8192, nullptr,
               "[x, y, width, height] in whole pixels within the target (level), width and height at least 1 "
               "(default: all of it)")

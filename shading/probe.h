@@ -53,6 +53,7 @@ public:
     uint32_t inputs_read() const override { return twin_->inputs_read(); }
     Interpolations interpolations() const override { return twin_->interpolations(); }
     SlotNames input_names() const override { return twin_->input_names(); }
+    int output_count() const override { return twin_->output_count(); }
     void shade(const FragmentLanes& in, FragmentResult& out) const override {
         ProbeSink sink{name_};
         ProbeSink* const saved = current_probe_sink();

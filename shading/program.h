@@ -14,6 +14,7 @@
 #include <memory>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <glm/mat2x2.hpp>
@@ -210,7 +211,14 @@ struct FragmentLanes {
 struct FragmentResult {
     Vec4 colour;                                    // layout(location = 0) out
     Mask discarded;                                 // lanes that executed discard
+    // layout(location = 1, 2, ...) out, where the pass draws into several
+    // targets: kMaxFragmentOutputs - 1 values; null when it does not.
+    Vec4* outputs = nullptr;
 };
+
+// What a fragment twin's main() returns for a shader with several outputs:
+// entry N is layout(location = N) out.
+template <int N> using FragmentOutputs = std::array<Vec4, N>;
 
 // Bit 4 * slot + c: component c (x, y, z, w) of varying `slot`, as a twin
 // declares what its main() reads: reads(v_uv, "xy") | reads(v_normal, "xyz").
@@ -237,6 +245,8 @@ public:
     virtual SlotNames input_names() const { return {}; }
     // As VertexTwin::unwritten().
     virtual const char* unwritten() const { return nullptr; }
+    // How many outputs (locations 0 ... N-1) main() writes.
+    virtual int output_count() const { return 1; }
 };
 
 // What a twin's main() reads: the inputs of every lane at once, and the
@@ -255,14 +265,27 @@ private:
 };
 
 // Adapter: Derived implements `Vec4 main(const Fragment&) const`, the twin
-// of the shader's main(), on all lanes at once.
+// of the shader's main(), on all lanes at once; or, for a shader with
+// outputs at locations 0 ... N-1, `FragmentOutputs<N> main(...)`.
 template <class Derived>
 class FragmentProgram : public FragmentTwin {
 public:
     void shade(const FragmentLanes& in, FragmentResult& out) const override {
         Exec exec;  // one invocation: fresh masks and loop budget
-        out.colour = static_cast<const Derived*>(this)->main(Fragment(in, exec));
+        const auto result = static_cast<const Derived*>(this)->main(Fragment(in, exec));
+        if constexpr (std::is_same_v<std::decay_t<decltype(result)>, Vec4>) {
+            out.colour = result;
+        } else {
+            out.colour = result[0];
+            if (out.outputs)
+                for (size_t k = 1; k < result.size(); ++k) out.outputs[k - 1] = result[k];
+        }
         out.discarded = exec.discarded();
+    }
+    int output_count() const override {
+        using Result = decltype(std::declval<const Derived&>().main(std::declval<const Fragment&>()));
+        if constexpr (std::is_same_v<Result, Vec4>) return 1;
+        else return int(std::tuple_size_v<Result>);
     }
 };
 

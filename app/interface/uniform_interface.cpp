@@ -221,7 +221,7 @@ void check_frame_uniforms(const Frame& frame, const std::vector<std::string>& gl
     static std::map<std::vector<std::string>, std::unique_ptr<ShaderFiles>> indexes;
     static std::map<std::string, std::shared_ptr<const GlslStage>> stages;
     static std::map<std::pair<std::string, std::string>, ActiveUniforms> programs;
-    static std::set<std::tuple<std::string, std::string, int, std::vector<std::string>>> twins_checked;
+    static std::set<std::tuple<std::string, std::string, int, std::vector<std::string>, int>> twins_checked;
     std::lock_guard<std::mutex> lock(mutex);
     auto& files = indexes[glsl_roots];
     auto stage = [&](const std::string& name, const char* extension) {
@@ -246,11 +246,13 @@ void check_frame_uniforms(const Frame& frame, const std::vector<std::string>& gl
             // The twins' slots against the GLSL's inputs and outputs, once per
             // program and attribute columns (a program without twins runs on GL
             // only); before GL links it, whose log says less.
-            const auto key = std::make_tuple(draw.vertex, draw.fragment, draw.vertices.attribute_count, draw.vertices.names);
+            const int targets = 1 + int(pass.outputs.size());
+            const auto key =
+                std::make_tuple(draw.vertex, draw.fragment, draw.vertices.attribute_count, draw.vertices.names, targets);
             if (!twins_checked.count(key)) {
                 const std::unique_ptr<VertexTwin> vt = make_vertex_twin(draw.vertex);
                 const std::unique_ptr<FragmentTwin> ft = make_fragment_twin(draw.fragment);
-                if (vt && ft) check_twin_varyings(*vs, *vt, *fs, *ft, draw.vertices);
+                if (vt && ft) check_twin_varyings(*vs, *vt, *fs, *ft, draw.vertices, targets);
                 twins_checked.insert(key);
             }
             // A program GL cannot compile fails here as it would at render.

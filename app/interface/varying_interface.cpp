@@ -128,7 +128,7 @@ std::map<int, const Varying*> slots_of(const std::vector<Varying>& vars, const S
 }  // namespace
 
 void check_twin_varyings(const GlslStage& vs, const VertexTwin& vertex_twin, const GlslStage& fs,
-                         const FragmentTwin& fragment_twin, const VertexArray& vertices) {
+                         const FragmentTwin& fragment_twin, const VertexArray& vertices, int targets) {
     const std::string vfile = vs.file_name(), ffile = fs.file_name();
     const std::string vtwin = "the twin of " + vfile, ftwin = "the twin of " + ffile;
 
@@ -163,11 +163,27 @@ void check_twin_varyings(const GlslStage& vs, const VertexTwin& vertex_twin, con
                              ", and the draw gives " + std::to_string(attribute_count) + " attributes");
     }
 
-    // Fragment outputs: a twin writes one colour, location 0.
+    // Fragment outputs: locations 0 to targets - 1, one per colour buffer
+    // of the pass, and the twin writes as many.
     const std::vector<Varying> outputs = interface_of(fs, "out");
-    if (outputs.size() > 1 || (outputs.size() == 1 && outputs[0].location > 0))
-        throw InputError(ffile + " declares outputs " + slot_list(outputs) +
-                         "; a fragment twin writes one, at location 0");
+    std::set<int> locations;
+    for (const Varying& o : outputs) {
+        if (o.location < 0 && outputs.size() > 1)
+            throw InputError(ffile + " declares outputs " + slot_list(outputs) + ", '" + o.name +
+                             "' without a location: with several outputs give each its layout(location = N)");
+        if (o.array_size > 0) throw InputError(ffile + ": output array '" + o.name + "' is not modelled");
+        locations.insert(std::max(o.location, 0));
+    }
+    std::set<int> wanted;
+    for (int k = 0; k < targets; ++k) wanted.insert(k);
+    if (locations != wanted)
+        throw InputError(ffile + " declares outputs " + slot_list(outputs) + ", and the pass draws into " +
+                         std::to_string(targets) + (targets == 1 ? " target (location 0)" : " targets (locations 0 to " +
+                                                                         std::to_string(targets - 1) + ")"));
+    if (fragment_twin.output_count() != targets)
+        throw InputError(ftwin + " writes " + std::to_string(fragment_twin.output_count()) + " output" +
+                         (fragment_twin.output_count() == 1 ? "" : "s") + ", and " + ffile + " declares " +
+                         std::to_string(targets));
 
     const std::vector<Varying> inputs = interface_of(fs, "in");
     const std::vector<Varying> vs_outputs = interface_of(vs, "out");

@@ -155,7 +155,25 @@ TEST(VaryingInterface, QualifiersAttributesAndOutputs) {
     const std::string two_outputs = std::string(kLocatedFrag).replace(std::string(kLocatedFrag).find("void main"), 0,
                                                                       "layout(location = 1) out vec4 bright;\n");
     EXPECT_EQ(refusal(kLocatedVert, vt, two_outputs.c_str(), ft, 1),
-              "pbr.frag declares outputs colour at 0, bright at 1; a fragment twin writes one, at location 0");
+              "pbr.frag declares outputs colour at 0, bright at 1, and the pass draws into 1 target (location 0)");
+    // A pass with two targets: the shader's two outputs fit, the twin's one does not.
+    VertexArray one;
+    one.attribute_count = 1;
+    try {
+        check_twin_varyings(parse_glsl_stage(kLocatedVert, "shaders/pbr.vert"), vt,
+                            parse_glsl_stage(two_outputs, "shaders/pbr.frag"), ft, one, 2);
+        ADD_FAILURE() << "a twin writing one output passed for two";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "the twin of pbr.frag writes 1 output, and pbr.frag declares 2");
+    }
+    // Several outputs need their locations.
+    const std::string unlocated = std::string(kPbrFrag).replace(std::string(kPbrFrag).find("in vec2 TexCoords;"), 0,
+                                                                "out vec4 Bright;\n");
+    vt.names = {"TexCoords", "WorldPos", "Normal"};
+    ft.names = vt.names;
+    EXPECT_EQ(refusal(kPbrVert, vt, unlocated.c_str(), ft, 3),
+              "pbr.frag declares outputs FragColor, Bright, 'FragColor' without a location: with several outputs give "
+              "each its layout(location = N)");
 }
 
 // Attributes by name: a vertex shader without locations on its inputs.

@@ -129,6 +129,28 @@ private:
     Mixed mixed_;
 };
 
+// outputs.frag and outputs_two.frag: several fragment outputs, one per
+// target of the pass; main() returns one value per location.
+class OutputsFragment final : public FragmentProgram<OutputsFragment> {  // outputs.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
+    FragmentOutputs<3> main(const Fragment& frag) const;
+
+private:
+    float exposure_ = 0.0f, cut_ = 0.0f;
+};
+
+class OutputsTwoFragment final : public FragmentProgram<OutputsTwoFragment> {  // outputs_two.frag
+public:
+    void bind(const Bindings& b) override { exposure_ = b.get<float>("exposure"); }
+    uint32_t inputs_read() const override;
+    FragmentOutputs<2> main(const Fragment& frag) const;
+
+private:
+    float exposure_ = 0.0f;
+};
+
 // unlocated.vert and unlocated.frag: GLSL 3.30 without locations; the
 // twins name their slots, by which every run matches them to the GLSL.
 class UnlocatedVertex final : public VertexTwin {  // unlocated.vert
