@@ -23,3 +23,26 @@ grep -q "twin of wrapsk.vert not written yet: write run() in kernels/wrapsk_vert
   { cat "$work/compare.txt"; fail "the skeleton's compare does not say what is left to write"; }
 [ -s "$work/skeleton/out/wrapsk-first.gl.png" ] || fail "the skeleton's scene was not drawn"
 echo "ok   new-technique: the example's shaders as a project built in $(( $(date +%s) - start )) s; compare exits 1: $(grep -c 'not written yet' "$work/compare.txt") twins to write"
+
+# The project's twins against its GLSL, checked on every run (issue 29): the
+# shaders are read at run time, so an edit to them alone, which GL would
+# link happily, must be refused with one line naming both sides (exit 2,
+# nothing written), before anything renders.
+proj="$work/skeleton"
+cp "$proj/glsl/wrapsk.vert" "$work/wrapsk.vert.orig"
+cp "$proj/glsl/wrapsk.frag" "$work/wrapsk.frag.orig"
+sed -i 's/v_normal/v_norm/g' "$proj/glsl/wrapsk.vert" "$proj/glsl/wrapsk.frag"
+expect_refused "a varying renamed in both shaders" "names slot 0 'v_normal', which wrapsk.frag does not declare as an input" \
+  "$proj/build/wrapsktwin" compare wrapsk-first
+cp "$work/wrapsk.vert.orig" "$proj/glsl/wrapsk.vert"
+cp "$work/wrapsk.frag.orig" "$proj/glsl/wrapsk.frag"
+sed -i 's/layout(location = 0) in vec4 v_normal/layout(location = 1) in vec4 v_normal/' "$proj/glsl/wrapsk.frag"
+sed -i 's/layout(location = 0) out vec4 v_normal/layout(location = 1) out vec4 v_normal/' "$proj/glsl/wrapsk.vert"
+expect_refused "a varying moved to another location" "holds 'v_normal' in slot 0; wrapsk.frag declares it at location 1" \
+  "$proj/build/wrapsktwin" compare wrapsk-first
+cp "$work/wrapsk.vert.orig" "$proj/glsl/wrapsk.vert"
+cp "$work/wrapsk.frag.orig" "$proj/glsl/wrapsk.frag"
+sed -i 's/uniform float wrap; /uniform int wrap; /' "$proj/glsl/wrapsk.frag"
+expect_refused "a uniform's type changed in the shader" "uniform 'wrap' is an int in wrapsk.frag, and the scene sets a float" \
+  "$proj/build/wrapsktwin" compare wrapsk-first
+cp "$work/wrapsk.frag.orig" "$proj/glsl/wrapsk.frag"

@@ -72,6 +72,12 @@ struct GlslStage {
     const GlslStruct* struct_named(const std::string& name) const;
 };
 
+// "a vec3", "an int", "a uint": a GLSL type with its article, for messages.
+inline std::string with_article(const std::string& type) {
+    const char c = type.empty() ? 'x' : type[0];
+    return (c == 'a' || c == 'e' || c == 'i' || c == 'o' ? "an " : "a ") + type;
+}
+
 // Throws InputError: "PATH:LINE: what is wrong" (a file it cannot read:
 // "cannot read PATH").
 GlslStage parse_glsl_stage(const std::string& source, const std::string& path);

@@ -126,7 +126,7 @@ std::string why_undeclared(const std::string& name, const GlslStage& vs, const G
         if (name[p] == '[') {
             const size_t close = name.find(']', p);
             const std::string index = close == std::string::npos ? "" : name.substr(p + 1, close - p - 1);
-            if (array_size == 0) return "uniform '" + name + "': " + path + " is a " + type + " in " + stage->file_name() + ", not an array";
+            if (array_size == 0) return "uniform '" + name + "': " + path + " is " + with_article(type) + " in " + stage->file_name() + ", not an array";
             const bool digits = !index.empty() && index.size() < 9 &&
                                 std::all_of(index.begin(), index.end(), [](char c) { return std::isdigit((unsigned char)c); });
             if (!digits || std::stoi(index) >= array_size)
@@ -141,7 +141,7 @@ std::string why_undeclared(const std::string& name, const GlslStage& vs, const G
             const std::string member = name.substr(p + 1, q - p - 1);
             const GlslStruct* st = stage->struct_named(type);
             if (!st || array_size > 0)
-                return "uniform '" + name + "': " + path + " is a " + type + (array_size ? "[]" : "") + " in " +
+                return "uniform '" + name + "': " + path + " is " + with_article(type) + (array_size ? "[]" : "") + " in " +
                        stage->file_name() + ", which has no member '" + member + "'";
             const auto m = std::find_if(st->members.begin(), st->members.end(),
                                         [&](const GlslVariable& v) { return v.name == member; });
@@ -155,7 +155,7 @@ std::string why_undeclared(const std::string& name, const GlslStage& vs, const G
             return "the scene sets uniform '" + name + "', which is no name GL gives a uniform";
         }
     }
-    return "uniform '" + name + "' is a " + type + (array_size ? "[" + std::to_string(array_size) + "]" : "") + " in " +
+    return "uniform '" + name + "' is " + with_article(type) + (array_size ? "[" + std::to_string(array_size) + "]" : "") + " in " +
            stage->file_name() + ": set each " + (array_size ? "element ('" + name + "[0]', ...)" : "member") +
            " as GL names it";
 }
@@ -180,11 +180,11 @@ void check_draw_uniforms(const DrawCall& draw, const GlslStage& vs, const GlslSt
         if (!set.insert(leaf->first).second) throw InputError("uniform '" + u.name + "' is set twice in one draw");
         const Leaf& l = leaf->second;
         if (is_sampler(l.type))
-            throw InputError("uniform '" + u.name + "' is a " + l.type + " in " + l.where +
+            throw InputError("uniform '" + u.name + "' is " + with_article(l.type) + " in " + l.where +
                              ": bind a texture to it, not a value");
         if (!sets(u.type, l.type))
-            throw InputError("uniform '" + u.name + "' is a " + l.type + " in " + l.where + ", and the scene sets a " +
-                             glsl_name(u.type));
+            throw InputError("uniform '" + u.name + "' is " + with_article(l.type) + " in " + l.where +
+                             ", and the scene sets " + with_article(glsl_name(u.type)));
     }
     for (const Texture& t : draw.textures) {
         const auto leaf = find(t.sampler);
@@ -193,7 +193,7 @@ void check_draw_uniforms(const DrawCall& draw, const GlslStage& vs, const GlslSt
                              " nor " + fs.file_name() + " declares as a sampler");
         const bool cube = leaf->second.type.find("Cube") != std::string::npos;
         if (cube != t.cube)
-            throw InputError("sampler '" + t.sampler + "' is a " + leaf->second.type + " in " + leaf->second.where +
+            throw InputError("sampler '" + t.sampler + "' is " + with_article(leaf->second.type) + " in " + leaf->second.where +
                              ", and the scene binds a " + (t.cube ? "cube map" : "2D texture") + " to it");
         if (!set.insert(leaf->first).second) throw InputError("sampler '" + t.sampler + "' has two textures bound in one draw");
     }

@@ -226,7 +226,7 @@ void check_twin_varyings(const GlslStage& vs, const VertexTwin& vertex_twin, con
         const int n = components(v->type);
         if (said && n > 0 && v->array_size == 0 && (bits >> n) != 0)
             throw InputError(ftwin + " reads component " + std::string(1, "xyzw"[31 - __builtin_clz(bits)]) +
-                             " of slot " + std::to_string(slot) + ", '" + v->name + "', a " + v->type + " in " + ffile);
+                             " of slot " + std::to_string(slot) + ", '" + v->name + "', " + with_article(v->type) + " in " + ffile);
         if (v->interpolation != interpolations[size_t(slot)])
             throw InputError("'" + v->name + "' is " + qualifier_name(v->interpolation) + " in " + ffile + ", and " +
                              ftwin + "'s interpolations() has slot " + std::to_string(slot) + " " +
