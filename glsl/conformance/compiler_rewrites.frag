@@ -31,6 +31,10 @@
 //                                        the constants' product folded
 //  21: float(int(x))                     runs as trunc(x): -0.0 for x in (-1, 0),
 //                                        x itself past int's range
+//  22: t * (a - 1.0) + 1.0                found to be lrp(1, a, t), runs as
+//                                        (1 - t) + a t; c + (b - c) * t, found
+//                                        too, runs as written (the fast lrp)
+//  23: length(v) * length(v), sqrt(q) * sqrt(q)   run as dot(v, v), abs(q)
 // Operands are finite values of many magnitudes from the pixel's index;
 // nothing is a constant but what the expression writes, so nothing else is
 // folded. The twin writes what llvmpipe runs; its uniform `twin_naive` (twin
@@ -100,6 +104,10 @@ void main() {
         frag_colour = vec4(refract(normalize(colour), normalize(diff), 0.66), 0.0);
     else if (group == 21)
         frag_colour = vec4(float(int(x)), float(int(a * 1e7)), float(int(t - 0.5)), 0.0);
+    else if (group == 22)
+        frag_colour = vec4(t * (a - 1.0) + 1.0, c + (b - c) * t, 0.0, 0.0);
+    else if (group == 23)
+        frag_colour = vec4(length(colour) * length(colour), sqrt(abs(a)) * sqrt(abs(a)), 0.0, 0.0);
     else {
         float s = 0.0;
         for (int i = 0; i < 8; ++i)

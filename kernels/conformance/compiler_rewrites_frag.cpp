@@ -93,6 +93,14 @@ Vec4 CompilerRewritesFragment::main(const Fragment& frag) const {
     case 21:  // nir_opt_algebraic: ~i2f(f2i(a)) -> ftrunc(a), so -0.0 in (-1, 0) and no int range
         if (naive_) return Vec4(float_of(int_of(x)), float_of(int_of(a * 1e7f)), float_of(int_of(t - 0.5f)), zero);
         return Vec4(trunc(x), trunc(a * 1e7f), trunc(t - 0.5f), zero);
+    case 22:  // GLSL IR opt_algebraic: (-x + y) * t + x -> lrp(x, y, t); nir_lower_flrp: x = 1 ->
+              // (1 - t) + y t (the values of mix_strict(1, y, t)); other x, nothing shared -> the
+              // fast form x + t (y - x), the expression as written
+        if (naive_) return Vec4(t * (a - 1.0f) + 1.0f, c + (b - c) * t, zero, zero);
+        return Vec4(mix_strict(Float(1.0f), a, t), c + (b - c) * t, zero, zero);
+    case 23:  // nir_opt_algebraic: sqrt(a) * sqrt(a) -> abs(a); length(v) is sqrt(dot(v, v))
+        if (naive_) return Vec4(length(colour) * length(colour), sqrt(abs(a)) * sqrt(abs(a)), zero, zero);
+        return Vec4(abs(dot(colour, colour)), abs(a), zero, zero);
     default: {  // 16 and any other group, as the GLSL's last else: the loop unrolled (NIR), then
                 //  each sin and the sums folded
         float s = 0.0f;
