@@ -823,6 +823,15 @@ PY
     expect_refused "a sampler type twins do not have" "volume.frag:3: uniform sampler3D volume" \
       "$bin" new-technique vol "$ex/wrap.vert" "$work/volume.frag"
     expect_refused "a shader that is not there" "cannot read" "$bin" new-technique gone "$ex/wrap.vert" "$work/none.frag"
+    # Several outputs, narrower than vec4 (a G-buffer): main() returns one Vec4 per location, and the
+    # scene draws the others into targets named after them.
+    printf '#version 330 core\nlayout (location = 0) out vec3 gPosition;\nlayout (location = 1) out vec4 gAlbedoSpec;\nlayout(location = 0) in vec4 v_normal;\nvoid main() { gPosition = v_normal.xyz; gAlbedoSpec = v_normal; }\n' \
+      >"$work/gbuf.frag"
+    "$bin" new-technique gbuf "$ex/wrap.vert" "$work/gbuf.frag" --out "$work/gbuf" >/dev/null || fail "new-technique: several outputs"
+    grep -q "st::FragmentOutputs<2> main(const st::Fragment& frag) const;" "$work/gbuf/kernels/gbuf.h" &&
+      grep -q 'pass.outputs.push_back({"gAlbedoSpec"});' "$work/gbuf/kernels/gbuf_scene.cpp" &&
+      grep -q "out vec3 gPosition: return Vec4(gPosition, ...) with 0.0" "$work/gbuf/kernels/gbuf_frag.cpp" ||
+      fail "new-technique: a twin of several outputs"
     ;;
 
   scene_docs)

@@ -266,7 +266,12 @@ TEST(SkeletonFiles, RefusesAnInterfaceTwinsCannotHave) {
     EXPECT_EQ(refusal(v, "#version 450\nin vec2 st;\nout vec4 c;\nvoid main() {}\n"),
               "t.frag:2: input 'st' has no vertex output of its name");
     EXPECT_EQ(refusal(v, "#version 450\nin vec2 uv;\nout vec4 c;\nout vec4 d;\nvoid main() {}\n"),
-              "t.frag:4: the fragment stage must write one vec4 output (location 0): twins write one colour");
+              "t.frag:3: output 'c' has no layout(location = N): with several outputs GL needs each's");
+    EXPECT_EQ(refusal(v, "#version 450\nin vec2 uv;\nlayout(location = 0) out vec4 c;\nlayout(location = 2) out vec3 d;\nvoid main() {}\n"),
+              "t.frag:4: output 'd' at location 2: the outputs' locations must be 0 to 1");
+    // Several outputs with their locations, of any float type: main() returns one Vec4 each.
+    EXPECT_EQ(refusal(v, "#version 450\nin vec2 uv;\nlayout(location = 1) out vec3 d;\nlayout(location = 0) out vec4 c;\nvoid main() {}\n"),
+              "(taken)");
     EXPECT_EQ(refusal(v, "#version 450\nin vec2 uv;\nout vec4 c;\nlayout(std140) uniform M { mat4 m; } ms[2];\nvoid main() {}\n"),
               "t.frag:4: an arrayed uniform block ('M'): not modelled");
     EXPECT_EQ(refusal(v, "#version 450\nin vec2 uv;\nout vec4 c;\nuniform sampler3D vol;\nvoid main() {}\n").substr(0, 34),

@@ -20,6 +20,7 @@ namespace {
 
 constexpr int kSlots = 8;        // shading/program.h kMaxVaryings
 constexpr int kAttributes = 16;  // vec4 attributes a vertex may have
+constexpr int kMaxOutputs = 4;   // frame/frame.h kMaxFragmentOutputs
 
 // ---- the interface ------------------------------------------------------
 
@@ -41,10 +42,16 @@ struct Varying {
 
 struct Interface {
     std::vector<Attribute> attributes;
+    std::vector<GlslVariable> outputs;  // the fragment outputs, by location
     std::vector<Varying> varyings;
     std::vector<GlslVariable> vertex_uniforms, fragment_uniforms, uniforms;  // uniforms: both, each once
     std::vector<GlslStruct> structs;                                        // those the uniforms use
 };
+
+// What the fragment twin's main() returns: one Vec4, or one per output location.
+std::string result_type(const Interface& in) {
+    return in.outputs.size() == 1 ? "st::Vec4" : "st::FragmentOutputs<" + std::to_string(in.outputs.size()) + ">";
+}
 
 [[noreturn]] void refuse(const GlslStage& s, int line, const std::string& why) {
     throw InputError(s.path + ":" + std::to_string(line) + ": " + why);
@@ -221,9 +228,26 @@ Interface interface_of(const GlslStage& vert, const GlslStage& frag) {
         match->fragment_constant = constant_name(v.name);
     }
     // One vec4 out (location 0).
-    if (frag.outputs.size() != 1 || frag.outputs[0].type != "vec4" || frag.outputs[0].location > 0 || frag.outputs[0].array_size)
-        refuse(frag, frag.outputs.empty() ? 1 : frag.outputs.back().line,
-               "the fragment stage must write one vec4 output (location 0): twins write one colour");
+    // Outputs: float ... vec4 at locations 0 ... N-1 (a lone one may have
+    // none: GL puts it at 0), one colour buffer each.
+    if (frag.outputs.empty()) refuse(frag, 1, "the fragment stage has no output");
+    if (int(frag.outputs.size()) > kMaxOutputs)
+        refuse(frag, frag.outputs.back().line, "at most " + std::to_string(kMaxOutputs) + " outputs (locations 0-3)");
+    for (const GlslVariable& v : frag.outputs) {
+        if (!components(v.type) || v.array_size)
+            refuse(frag, v.line, "output " + v.type + " " + v.name + ": outputs are float, vec2, vec3 or vec4 (float targets)");
+        if (frag.outputs.size() > 1 && v.location < 0)
+            refuse(frag, v.line, "output '" + v.name + "' has no layout(location = N): with several outputs GL needs each's");
+        GlslVariable o = v;
+        o.location = std::max(v.location, 0);
+        in.outputs.push_back(o);
+    }
+    std::sort(in.outputs.begin(), in.outputs.end(), [](const GlslVariable& a, const GlslVariable& b) { return a.location < b.location; });
+    for (size_t k = 0; k < in.outputs.size(); ++k)
+        if (in.outputs[k].location != int(k))
+            refuse(frag, in.outputs[k].line, "output '" + in.outputs[k].name + "' at location " +
+                                                 std::to_string(in.outputs[k].location) + ": the outputs' locations must be 0 to " +
+                                                 std::to_string(in.outputs.size() - 1));
     // Uniforms: each stage's, and all of them once.
     std::set<std::string> structs_used;
     GlslStage vert_types = vert, frag_types = frag;  // the stages' structs and the blocks' types
@@ -400,7 +424,7 @@ std::string header_file(const Names& n, const Interface& in) {
                     [](const Varying& y) { return !y.fragment_name.empty() && y.interpolation != "smooth"; }))
         o << "    // The inputs' interpolation qualifiers (flat, noperspective).\n"
           << "    st::Interpolations interpolations() const override;\n";
-    o << "    st::Vec4 main(const st::Fragment& frag) const;\n"
+    o << "    " << result_type(in) << " main(const st::Fragment& frag) const;\n"
       << "    // Delete once main() is written: until then `compare` fails, saying so.\n"
       << "    const char* unwritten() const override {\n        return \"write main() in kernels/" << n.name
       << "_frag.cpp from the GLSL in its comments, then delete unwritten() in kernels/" << n.name << ".h\";\n    }\n";
@@ -488,7 +512,7 @@ std::string fragment_file(const Names& n, const Interface& in, const GlslStage& 
                   << ";  // " << y->interpolation << " in " << y->type << " " << y->fragment_name << "\n";
         o << "    return q;\n}\n";
     }
-    o << "\nst::Vec4 " << n.fragment_class << "::main(const st::Fragment& frag) const {\n"
+    o << "\n" << result_type(in) << " " << n.fragment_class << "::main(const st::Fragment& frag) const {\n"
       << "    using namespace st;\n    using namespace st::glsl;\n"
       << "    // The GLSL's names, as the twin reads them:\n";
     for (const Varying* y : read) {
@@ -509,9 +533,17 @@ std::string fragment_file(const Names& n, const Interface& in, const GlslStage& 
         else o << "    //   " << u.name << at << "  ->  " << u.name << "_" << at << " (" << member_type(u.type) << "; Vec3(v) makes lanes of a glm::vec3 v)\n";
     }
     o << "    //   gl_FragCoord  ->  frag.frag_coord();  discard, loops, ifs that assign: frag.exec()\n"
-      << "    // GLSL main(), to write here (its output is the value returned):\n    //\n"
-      << as_comment(function_text(*frag.function("main")), "    ")
-      << "    return Vec4(Float(0.0f));  // until main() is written (unwritten() says so)\n}\n";
+      << "    // GLSL main(), to write here (" << (in.outputs.size() == 1 ? "its output is the value returned" : "its outputs are the values returned, by location")
+      << "):\n";
+    for (const GlslVariable& out : in.outputs)
+        if (components(out.type) < 4)
+            o << "    //   out " << out.type << " " << out.name << ": return Vec4(" << out.name
+              << ", ...) with 0.0 for the components it lacks, as llvmpipe writes them (its outputs start at zero)\n";
+    o << "    //\n" << as_comment(function_text(*frag.function("main")), "    ");
+    if (in.outputs.size() == 1)
+        o << "    return Vec4(Float(0.0f));  // until main() is written (unwritten() says so)\n}\n";
+    else
+        o << "    return {};  // until main() is written (unwritten() says so): one Vec4 per location\n}\n";
     return o.str();
 }
 
@@ -613,7 +645,15 @@ std::string scene_file(const Names& n, const Interface& in) {
       << "            const uint32_t a = uint32_t(j * (grid + 1) + i), b = a + uint32_t(grid + 1);\n"
       << "            draw.indices.insert(draw.indices.end(), {a, a + 1, b + 1, a, b + 1, b});\n        }\n\n"
       << "    st::Pass pass;\n    pass.width = size.width;\n    pass.height = size.height;\n"
-      << "    pass.draws.push_back(std::move(draw));\n    st::Frame frame;\n    frame.passes.push_back(std::move(pass));\n"
+      << "    pass.draws.push_back(std::move(draw));\n    st::Frame frame;\n";
+    if (in.outputs.size() > 1)
+        o << "    // Output 0 is the image; each other output draws into a target of its\n"
+          << "    // name, the image's size (compared and hashed as the image is).\n";
+    for (size_t k = 1; k < in.outputs.size(); ++k)
+        o << "    frame.targets.push_back({\"" << in.outputs[k].name << "\", size.width, size.height});  // out "
+          << in.outputs[k].type << " " << in.outputs[k].name << ", location " << k << "\n"
+          << "    pass.outputs.push_back({\"" << in.outputs[k].name << "\"});\n";
+    o << "    frame.passes.push_back(std::move(pass));\n"
       << "    return frame;\n}\n";
     return o.str();
 }
