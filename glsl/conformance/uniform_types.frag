@@ -3,7 +3,7 @@
 // (issue 29): an array read at a constant and at a per-pixel index, an array
 // of structs read at a per-pixel index, int, uint, bool, bvec2, ivec3 and
 // uvec2, mat2, mat3 and the non-square mat2x3, mat3x2 and mat4x3, and a
-// std140 block whose members mix those types (a bool, a uvec2, a float
+// std140 block (binding 2) whose members mix those types (a bool, a uvec2, a float
 // array 16 bytes apart, a mat3 and a mat2x3 at their std140 strides). The
 // pixel's column picks one of twelve groups, each writing a few of the
 // values untouched or through one matrix product, so a value read from the
@@ -34,7 +34,7 @@ uniform mat2x3 skew;
 uniform mat3x2 squash;
 uniform mat4x3 affine;
 
-layout(std140) uniform Mixed {
+layout(std140, binding = 2) uniform Mixed {
     float a;
     vec3 b;
     int c;
