@@ -168,6 +168,11 @@ struct DrawCall {
     std::vector<Texture> textures;       // bound to units 0..N-1 in order
     DrawState state;
     std::shared_ptr<const HostStage> host_stage;  // optional
+    // For a fragment shader whose several outputs have no layout(location):
+    // the output at each location, 0, 1, ..., as an application binds them
+    // with glBindFragDataLocation before linking. Empty: the shader's own
+    // locations.
+    std::vector<std::string> output_names;
 };
 
 // A named render target that passes draw into and later passes sample.

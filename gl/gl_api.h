@@ -22,7 +22,7 @@ namespace st {
 // function here before using it; load_gl_api refuses a platform that lacks
 // one.
 #define ST_GL_FUNCTIONS(X)                                                                                  \
-    X(ActiveTexture) X(AttachShader) X(BindBuffer) X(BindFramebuffer) X(BindRenderbuffer) X(BindSampler)     \
+    X(ActiveTexture) X(AttachShader) X(BindBuffer) X(BindFragDataLocation) X(BindFramebuffer) X(BindRenderbuffer) X(BindSampler)     \
     X(BindTexture) X(BindVertexArray) X(BlendEquation) X(BlendFunc) X(BlendFuncSeparate) X(BufferData)      \
     X(BufferSubData) X(CheckFramebufferStatus) X(Clear) X(ClearColor) X(ClearDepth) X(CompileShader)        \
     X(CreateProgram) X(CreateShader) X(DeleteBuffers) X(DeleteFramebuffers) X(DeleteProgram)                \

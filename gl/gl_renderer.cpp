@@ -14,6 +14,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 namespace st {
 
@@ -63,8 +64,8 @@ GLuint compile(const GlApi& gl, GLenum type, const std::string& path, const std:
     return shader;
 }
 
-GLuint link(const GlApi& gl, const std::string& vert_path, const std::string& frag_path,
-            const std::string& frag_source) {
+GLuint link(const GlApi& gl, const std::string& vert_path, const std::string& frag_path, const std::string& frag_source,
+            const std::vector<std::string>& output_names) {
     GLuint vs = compile(gl, GL_VERTEX_SHADER, vert_path, read_source(vert_path));
     GLuint fs = 0;
     try {
@@ -76,6 +77,7 @@ GLuint link(const GlApi& gl, const std::string& vert_path, const std::string& fr
     GLuint program = gl.CreateProgram();
     gl.AttachShader(program, vs);
     gl.AttachShader(program, fs);
+    for (size_t k = 0; k < output_names.size(); ++k) gl.BindFragDataLocation(program, GLuint(k), output_names[k].c_str());
     gl.LinkProgram(program);
     gl.DeleteShader(vs);
     gl.DeleteShader(fs);
@@ -290,7 +292,8 @@ struct GlRenderer::State {
         GLuint texture = 0;
         std::vector<GLuint> fbos, depths;
     };
-    std::map<std::pair<std::string, std::string>, GLuint> programs;  // kept across frames
+    // Per (vertex, fragment, output names), kept across frames.
+    std::map<std::tuple<std::string, std::string, std::vector<std::string>>, GLuint> programs;
     // Per program, the uniforms the last draw that used it set. A program
     // keeps its uniform values across draws and frames, so one a later draw
     // leaves out would read the earlier draw's value (an earlier scene's, in
@@ -354,24 +357,27 @@ std::string GlRenderer::renderer() const { return context_->renderer(); }
 std::string GlRenderer::version() const { return context_->version(); }
 GlPlatform GlRenderer::platform() const { return context_->platform(); }
 
-unsigned GlRenderer::program(const std::string& vertex, const std::string& fragment) {
-    auto key = std::make_pair(vertex, fragment);
+unsigned GlRenderer::program(const std::string& vertex, const std::string& fragment,
+                             const std::vector<std::string>& output_names) {
+    auto key = std::make_tuple(vertex, fragment, output_names);
     auto it = state_->programs.find(key);
     if (it == state_->programs.end()) {
         const std::string& frag_path = shaders_->path(fragment, ".frag");
         std::string frag_source = read_source(frag_path);
         if (fragment_filter_) frag_source = fragment_filter_(fragment, frag_source);
-        it = state_->programs.emplace(key, link(context_->gl(), shaders_->path(vertex, ".vert"), frag_path, frag_source))
+        it = state_->programs
+                 .emplace(key, link(context_->gl(), shaders_->path(vertex, ".vert"), frag_path, frag_source, output_names))
                  .first;
     }
     return it->second;
 }
 
 std::vector<GlRenderer::ActiveUniform> GlRenderer::active_uniforms(const std::string& vertex,
-                                                                   const std::string& fragment) {
+                                                                   const std::string& fragment,
+                                                                   const std::vector<std::string>& output_names) {
     context_->make_current();
     const GlApi& gl = context_->gl();
-    const GLuint p = program(vertex, fragment);
+    const GLuint p = program(vertex, fragment, output_names);
     GLint count = 0;
     gl.GetProgramiv(p, GL_ACTIVE_UNIFORMS, &count);
     std::vector<ActiveUniform> out;
@@ -480,7 +486,7 @@ void GlRenderer::prepare(const Frame& frame) {
         }
         for (const DrawCall& dc : pass.draws) {
             State::Draw d;
-            d.program = program(dc.vertex, dc.fragment);
+            d.program = program(dc.vertex, dc.fragment, dc.output_names);
             d.state = dc.state;
             if (dc.host_stage) {
                 d.host_stage = dc.host_stage;

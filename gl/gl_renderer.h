@@ -56,7 +56,8 @@ public:
         std::string name;
         int size = 1;
     };
-    std::vector<ActiveUniform> active_uniforms(const std::string& vertex, const std::string& fragment);
+    std::vector<ActiveUniform> active_uniforms(const std::string& vertex, const std::string& fragment,
+                                               const std::vector<std::string>& output_names = {});
 
     std::string renderer() const;
     std::string version() const;
@@ -64,7 +65,8 @@ public:
 
 private:
     struct State;
-    unsigned program(const std::string& vertex, const std::string& fragment);  // compiled once per pair
+    // Compiled once per pair and DrawCall::output_names.
+    unsigned program(const std::string& vertex, const std::string& fragment, const std::vector<std::string>& output_names);
     std::unique_ptr<ShaderFiles> shaders_;
     std::unique_ptr<GlContext> context_;
     std::unique_ptr<State> state_;

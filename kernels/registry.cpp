@@ -59,6 +59,7 @@ void add_builtin_twins(TwinRegistry& r) {
     r.add_fragment("outputs_two", [] { return std::make_unique<OutputsTwoFragment>(); });
     r.add_vertex("unlocated", [] { return std::make_unique<UnlocatedVertex>(); });
     r.add_fragment("unlocated", [] { return std::make_unique<UnlocatedFragment>(); });
+    r.add_fragment("unlocated_outputs", [] { return std::make_unique<UnlocatedOutputsFragment>(); });
     r.add_fragment("probe_demo", [] { return std::make_unique<ProbeDemoFragment>(); });
     r.add_fragment("loop_budget", [] { return std::make_unique<LoopBudgetFragment>(); });
     r.add_fragment("sample_implicit", [] { return std::make_unique<SampleImplicitFragment>(); });

@@ -145,9 +145,9 @@ void TileShader::merge(size_t calls, const std::vector<PreparedDraw>& draws, con
         float* out_colour[kGroupsPerCall];
         float* out_depth[kGroupsPerCall];
         // Where each group sits, for the other colour buffers (none: a scratch copy).
-        size_t block[kGroupsPerCall];
-        int half[kGroupsPerCall];
-        bool fresh[kGroupsPerCall];  // not written before this call: reads the clear value
+        size_t block[kGroupsPerCall] = {};
+        int half[kGroupsPerCall] = {};
+        bool fresh[kGroupsPerCall] = {};  // not written before this call: reads the clear value
         for (int g = 0; g < kGroupsPerCall; ++g) {
             // A group without a live lane (padding, or all discarded) loads
             // and stores a scratch copy, never the framebuffer.

@@ -187,6 +187,7 @@ Pass read_pass(JsonReader& r, const std::vector<RenderTarget>& targets, SceneSiz
     DrawCall draw;
     draw.vertex = r.text("vertex");
     draw.fragment = r.text("fragment");
+    if (r.has("output_names")) draw.output_names = r.texts("output_names");
     if (r.has("uniforms"))
         for (JsonReader& u : declared_objects(r, "uniforms")) draw.uniforms.push_back(read_uniform(u));
     if (r.has("textures"))

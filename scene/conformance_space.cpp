@@ -36,6 +36,11 @@ ParamSpace pass_fields() {
               "the colour the target is cleared to")
         .draws(0, 1).edge({0, 1});
     s.text("fragment", "required", "the program: glsl/conformance/<fragment>.frag");
+    s.texts("output_names", 1, 4, nullptr,
+            "for a program whose several outputs have no layout(location): the output at location 0, 1, ..., "
+            "bound by name as glBindFragDataLocation does")
+        .only_if_present()
+        .not_explored();
     s.text("vertex", "textured",
            "the vertex program: `textured` (glsl/triangles/textured.vert: position, colour and uv passed on) or one "
            "of glsl/conformance/ with the same inputs and outputs");

@@ -45,4 +45,35 @@ cp "$work/wrapsk.frag.orig" "$proj/glsl/wrapsk.frag"
 sed -i 's/uniform float wrap; /uniform int wrap; /' "$proj/glsl/wrapsk.frag"
 expect_refused "a uniform's type changed in the shader" "uniform 'wrap' is an int in wrapsk.frag, and the scene sets a float" \
   "$proj/build/wrapsktwin" compare wrapsk-first
-cp "$work/wrapsk.frag.orig" "$proj/glsl/wrapsk.frag"
+# restore: put both shaders back as new-technique wrote them.
+restore() { cp "$work/wrapsk.vert.orig" "$proj/glsl/wrapsk.vert"; cp "$work/wrapsk.frag.orig" "$proj/glsl/wrapsk.frag"; }
+restore
+sed -i 's/uniform float wrap; /uniform float wrapping; /; s/(n_dot_l + wrap)/(n_dot_l + wrapping)/; s/(1.0 + wrap)/(1.0 + wrapping)/' \
+  "$proj/glsl/wrapsk.frag"
+expect_refused "a uniform renamed in the shader" "the scene sets uniform 'wrap', which neither wrapsk.vert nor wrapsk.frag declares" \
+  "$proj/build/wrapsktwin" compare wrapsk-first
+restore
+sed -i 's/^uniform vec3 albedo;/uniform vec3 albedo;\nuniform float gain;/; s/frag_colour = vec4(colour, 1.0);/frag_colour = vec4(colour * gain, 1.0);/' \
+  "$proj/glsl/wrapsk.frag"
+expect_refused "a uniform the scene never sets" "uniform 'gain' (float in wrapsk.frag, active in the program) is never set" \
+  "$proj/build/wrapsktwin" compare wrapsk-first
+restore
+sed -i 's/layout(location = 0) in vec4 v_normal/layout(location = 0) flat in vec4 v_normal/' "$proj/glsl/wrapsk.frag"
+sed -i 's/layout(location = 0) out vec4 v_normal/layout(location = 0) flat out vec4 v_normal/' "$proj/glsl/wrapsk.vert"
+expect_refused "an input made flat" "'v_normal' is flat in wrapsk.frag, and the twin of wrapsk.frag's interpolations() has slot 0 smooth" \
+  "$proj/build/wrapsktwin" compare wrapsk-first
+restore
+sed -i 's/in vec4 v_normal/in vec2 v_normal/; s/normalize(v_normal.xyz)/normalize(vec3(v_normal, 1.0))/' "$proj/glsl/wrapsk.frag"
+sed -i 's/out vec4 v_normal/out vec2 v_normal/; s/v_normal = normal;/v_normal = normal.xy;/' "$proj/glsl/wrapsk.vert"
+expect_refused "an input narrowed" "the twin of wrapsk.frag reads component w of slot 0, 'v_normal', a vec2 in wrapsk.frag" \
+  "$proj/build/wrapsktwin" compare wrapsk-first
+restore
+sed -i 's/^layout(location = 0) out vec4 frag_colour;/layout(location = 0) out vec4 frag_colour;\nlayout(location = 1) out vec4 extra;/' \
+  "$proj/glsl/wrapsk.frag"
+expect_refused "an output added" "wrapsk.frag declares outputs frag_colour at 0, extra at 1, and the pass draws into 1 target" \
+  "$proj/build/wrapsktwin" compare wrapsk-first
+restore
+sed -i 's/in vec4 normal;/in vec4 normal_in;/; s/v_normal = normal;/v_normal = normal_in;/' "$proj/glsl/wrapsk.vert"
+expect_refused "an attribute renamed" "the draw names attribute 1 'normal', which wrapsk.vert does not declare as an input" \
+  "$proj/build/wrapsktwin" compare wrapsk-first
+restore

@@ -265,8 +265,8 @@ TEST(SkeletonFiles, RefusesAnInterfaceTwinsCannotHave) {
     EXPECT_EQ(refusal("#version 450\nin vec4 p;\nout vec2 uv;\nvoid main() {}\n", fr), "(taken)");
     EXPECT_EQ(refusal(v, "#version 450\nin vec2 st;\nout vec4 c;\nvoid main() {}\n"),
               "t.frag:2: input 'st' has no vertex output of its name");
-    EXPECT_EQ(refusal(v, "#version 450\nin vec2 uv;\nout vec4 c;\nout vec4 d;\nvoid main() {}\n"),
-              "t.frag:3: output 'c' has no layout(location = N): with several outputs GL needs each's");
+    // Several outputs without locations: bound by name, in declaration order.
+    EXPECT_EQ(refusal(v, "#version 450\nin vec2 uv;\nout vec4 c;\nout vec4 d;\nvoid main() {}\n"), "(taken)");
     EXPECT_EQ(refusal(v, "#version 450\nin vec2 uv;\nlayout(location = 0) out vec4 c;\nlayout(location = 2) out vec3 d;\nvoid main() {}\n"),
               "t.frag:4: output 'd' at location 2: the outputs' locations must be 0 to 1");
     // Several outputs with their locations, of any float type: main() returns one Vec4 each.

@@ -199,6 +199,7 @@ void check_draw_uniforms(const DrawCall& draw, const GlslStage& vs, const GlslSt
     }
     if (!active) return;
     for (const GlRenderer::ActiveUniform& a : *active) {
+        if (a.name.rfind("gl_", 0) == 0) continue;  // GL's own state (gl_DepthRange), no scene's to set
         // An array is reported once, as "name[0]", with its size.
         const bool array = a.name.size() > 3 && a.name.compare(a.name.size() - 3, 3, "[0]") == 0;
         const std::string base = array ? a.name.substr(0, a.name.size() - 3) : a.name;
@@ -221,7 +222,8 @@ void check_frame_uniforms(const Frame& frame, const std::vector<std::string>& gl
     static std::map<std::vector<std::string>, std::unique_ptr<ShaderFiles>> indexes;
     static std::map<std::string, std::shared_ptr<const GlslStage>> stages;
     static std::map<std::pair<std::string, std::string>, ActiveUniforms> programs;
-    static std::set<std::tuple<std::string, std::string, int, std::vector<std::string>, int>> twins_checked;
+    static std::set<std::tuple<std::string, std::string, int, std::vector<std::string>, int, std::vector<std::string>>>
+        twins_checked;
     std::lock_guard<std::mutex> lock(mutex);
     auto& files = indexes[glsl_roots];
     auto stage = [&](const std::string& name, const char* extension) {
@@ -247,12 +249,12 @@ void check_frame_uniforms(const Frame& frame, const std::vector<std::string>& gl
             // program and attribute columns (a program without twins runs on GL
             // only); before GL links it, whose log says less.
             const int targets = 1 + int(pass.outputs.size());
-            const auto key =
-                std::make_tuple(draw.vertex, draw.fragment, draw.vertices.attribute_count, draw.vertices.names, targets);
+            const auto key = std::make_tuple(draw.vertex, draw.fragment, draw.vertices.attribute_count,
+                                             draw.vertices.names, targets, draw.output_names);
             if (!twins_checked.count(key)) {
                 const std::unique_ptr<VertexTwin> vt = make_vertex_twin(draw.vertex);
                 const std::unique_ptr<FragmentTwin> ft = make_fragment_twin(draw.fragment);
-                if (vt && ft) check_twin_varyings(*vs, *vt, *fs, *ft, draw.vertices, targets);
+                if (vt && ft) check_twin_varyings(*vs, *vt, *fs, *ft, draw.vertices, targets, draw.output_names);
                 twins_checked.insert(key);
             }
             // A program GL cannot compile fails here as it would at render.

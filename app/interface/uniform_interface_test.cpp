@@ -126,7 +126,8 @@ TEST(UniformInterface, TexturesAgainstTheSamplers) {
 TEST(UniformInterface, AnActiveUniformNeverSet) {
     Fixture f;
     // As GL reports them: an array once with its size, struct arrays member by member.
-    ActiveUniforms active = {{"projection", 1}, {"lightPositions[0]", 4}, {"lights[0].position", 1}, {"albedoMap", 1}};
+    ActiveUniforms active = {{"projection", 1}, {"lightPositions[0]", 4}, {"lights[0].position", 1}, {"albedoMap", 1},
+                             {"gl_DepthRange.near", 1}};
     EXPECT_EQ(f.refusal(&active), "");
     f.draw.uniforms.erase(f.draw.uniforms.begin() + 7);  // lightPositions[2]
     EXPECT_EQ(f.refusal(&active), "uniform 'lightPositions[2]' (vec3 in pbr.frag, active in the program) is never set "

@@ -128,7 +128,8 @@ std::map<int, const Varying*> slots_of(const std::vector<Varying>& vars, const S
 }  // namespace
 
 void check_twin_varyings(const GlslStage& vs, const VertexTwin& vertex_twin, const GlslStage& fs,
-                         const FragmentTwin& fragment_twin, const VertexArray& vertices, int targets) {
+                         const FragmentTwin& fragment_twin, const VertexArray& vertices, int targets,
+                         const std::vector<std::string>& output_names) {
     const std::string vfile = vs.file_name(), ffile = fs.file_name();
     const std::string vtwin = "the twin of " + vfile, ftwin = "the twin of " + ffile;
 
@@ -165,12 +166,25 @@ void check_twin_varyings(const GlslStage& vs, const VertexTwin& vertex_twin, con
 
     // Fragment outputs: locations 0 to targets - 1, one per colour buffer
     // of the pass, and the twin writes as many.
-    const std::vector<Varying> outputs = interface_of(fs, "out");
+    std::vector<Varying> outputs = interface_of(fs, "out");
+    // Locations the draw binds by name (glBindFragDataLocation), for
+    // outputs the shader gives none.
+    for (size_t k = 0; k < output_names.size(); ++k) {
+        const auto o = std::find_if(outputs.begin(), outputs.end(), [&](const Varying& x) { return x.name == output_names[k]; });
+        if (o == outputs.end())
+            throw InputError("the draw binds output '" + output_names[k] + "' to location " + std::to_string(k) + ", and " +
+                             ffile + " declares no such output (its outputs: " + slot_list(outputs) + ")");
+        if (o->location >= 0 && o->location != int(k))
+            throw InputError("the draw binds output '" + o->name + "' to location " + std::to_string(k) + "; " + ffile +
+                             " declares it at location " + std::to_string(o->location));
+        o->location = int(k);
+    }
     std::set<int> locations;
     for (const Varying& o : outputs) {
         if (o.location < 0 && outputs.size() > 1)
             throw InputError(ffile + " declares outputs " + slot_list(outputs) + ", '" + o.name +
-                             "' without a location: with several outputs give each its layout(location = N)");
+                             "' without a location: with several outputs give each its layout(location = N), or "
+                             "bind them by name (DrawCall::output_names)");
         if (o.array_size > 0) throw InputError(ffile + ": output array '" + o.name + "' is not modelled");
         locations.insert(std::max(o.location, 0));
     }

@@ -27,7 +27,8 @@
 //   shader does not declare as an input, or declares at another location,
 //   and an input it uses that no attribute names;
 // - fragment outputs other than one per colour buffer of the pass
-//   (locations 0 to N-1; with several, each with its location), or a twin
+//   (locations 0 to N-1; with several, each with its location or bound by
+//   name, DrawCall::output_names), or a twin
 //   writing another number of them (FragmentTwin::output_count()).
 // A twin whose inputs_read() is every bit (the default) is not checked for
 // what it reads: it has not said.
@@ -42,8 +43,10 @@ namespace st {
 
 // Throws InputError with one line for the first mismatch. `vertices` are
 // the draw's (their attribute count and names), `targets` the colour
-// buffers its pass draws into (1 + Pass::outputs).
+// buffers its pass draws into (1 + Pass::outputs), `output_names` the
+// draw's DrawCall::output_names.
 void check_twin_varyings(const GlslStage& vertex, const VertexTwin& vertex_twin, const GlslStage& fragment,
-                         const FragmentTwin& fragment_twin, const VertexArray& vertices, int targets = 1);
+                         const FragmentTwin& fragment_twin, const VertexArray& vertices, int targets = 1,
+                         const std::vector<std::string>& output_names = {});
 
 }  // namespace st

@@ -173,7 +173,22 @@ TEST(VaryingInterface, QualifiersAttributesAndOutputs) {
     ft.names = vt.names;
     EXPECT_EQ(refusal(kPbrVert, vt, unlocated.c_str(), ft, 3),
               "pbr.frag declares outputs FragColor, Bright, 'FragColor' without a location: with several outputs give "
-              "each its layout(location = N)");
+              "each its layout(location = N), or bind them by name (DrawCall::output_names)");
+    // Bound by name, as glBindFragDataLocation does.
+    VertexArray three;
+    three.attribute_count = 3;
+    const auto bound = [&](std::vector<std::string> names) {
+        try {
+            check_twin_varyings(parse_glsl_stage(kPbrVert, "shaders/pbr.vert"), vt,
+                                parse_glsl_stage(unlocated, "shaders/pbr.frag"), ft, three, 2, names);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(bound({"Bright", "FragColor"}), "the twin of pbr.frag writes 1 output, and pbr.frag declares 2");
+    EXPECT_EQ(bound({"Bright", "FragColour"}), "the draw binds output 'FragColour' to location 1, and pbr.frag declares no "
+                                               "such output (its outputs: FragColor, Bright at 0)");
 }
 
 // Attributes by name: a vertex shader without locations on its inputs.

@@ -43,6 +43,7 @@ struct Varying {
 struct Interface {
     std::vector<Attribute> attributes;
     std::vector<GlslVariable> outputs;  // the fragment outputs, by location
+    bool outputs_by_name = false;       // some of several have no location: the scene binds them
     std::vector<Varying> varyings;
     std::vector<GlslVariable> vertex_uniforms, fragment_uniforms, uniforms;  // uniforms: both, each once
     std::vector<GlslStruct> structs;                                        // those the uniforms use
@@ -233,13 +234,22 @@ Interface interface_of(const GlslStage& vert, const GlslStage& frag) {
     if (frag.outputs.empty()) refuse(frag, 1, "the fragment stage has no output");
     if (int(frag.outputs.size()) > kMaxOutputs)
         refuse(frag, frag.outputs.back().line, "at most " + std::to_string(kMaxOutputs) + " outputs (locations 0-3)");
+    // Several outputs without locations take the free ones in declaration
+    // order, and the scene binds them by name (glBindFragDataLocation).
+    std::set<int> taken_outputs;
+    for (const GlslVariable& v : frag.outputs)
+        if (v.location >= 0) taken_outputs.insert(v.location);
+    int next_output = 0;
     for (const GlslVariable& v : frag.outputs) {
         if (!components(v.type) || v.array_size)
             refuse(frag, v.line, "output " + v.type + " " + v.name + ": outputs are float, vec2, vec3 or vec4 (float targets)");
-        if (frag.outputs.size() > 1 && v.location < 0)
-            refuse(frag, v.line, "output '" + v.name + "' has no layout(location = N): with several outputs GL needs each's");
         GlslVariable o = v;
-        o.location = std::max(v.location, 0);
+        if (o.location < 0) {
+            while (taken_outputs.count(next_output)) ++next_output;
+            o.location = next_output;
+            taken_outputs.insert(next_output);
+            if (frag.outputs.size() > 1) in.outputs_by_name = true;
+        }
         in.outputs.push_back(o);
     }
     std::sort(in.outputs.begin(), in.outputs.end(), [](const GlslVariable& a, const GlslVariable& b) { return a.location < b.location; });
@@ -649,6 +659,12 @@ std::string scene_file(const Names& n, const Interface& in) {
     if (in.outputs.size() > 1)
         o << "    // Output 0 is the image; each other output draws into a target of its\n"
           << "    // name, the image's size (compared and hashed as the image is).\n";
+    if (in.outputs_by_name) {
+        o << "    // The outputs by location, bound by name (glBindFragDataLocation): the\n"
+          << "    // shader gives them none.\n    pass.draws.back().output_names = {";
+        for (size_t k = 0; k < in.outputs.size(); ++k) o << (k ? ", " : "") << "\"" << in.outputs[k].name << "\"";
+        o << "};\n";
+    }
     for (size_t k = 1; k < in.outputs.size(); ++k)
         o << "    frame.targets.push_back({\"" << in.outputs[k].name << "\", size.width, size.height});  // out "
           << in.outputs[k].type << " " << in.outputs[k].name << ", location " << k << "\n"

@@ -171,6 +171,19 @@ private:
     glm::vec3 tint_{0.0f};
 };
 
+// unlocated_outputs.frag: two outputs without locations, bound by name;
+// main() returns them in the order of the locations the scene binds.
+class UnlocatedOutputsFragment final : public FragmentProgram<UnlocatedOutputsFragment> {  // unlocated_outputs.frag
+public:
+    void bind(const Bindings& b) override { tint_ = b.get<glm::vec3>("tint"); }
+    SlotNames input_names() const override { return {"vColour", "vUV"}; }
+    uint32_t inputs_read() const override;
+    FragmentOutputs<2> main(const Fragment& frag) const;
+
+private:
+    glm::vec3 tint_{0.0f};
+};
+
 // builtins_vertex.vert: the built-ins in the vertex stage, per cell.
 class BuiltinsVertex final : public VertexTwin {  // builtins_vertex.vert
 public:
