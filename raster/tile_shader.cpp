@@ -145,6 +145,7 @@ void TileShader::merge(size_t calls, const std::vector<PreparedDraw>& draws, con
         float* out_colour[kGroupsPerCall];
         float* out_depth[kGroupsPerCall];
         // Where each group sits, for the other colour buffers (none: a scratch copy).
+        const bool has_outputs = !outputs_.empty();
         size_t block[kGroupsPerCall] = {};
         int half[kGroupsPerCall] = {};
         bool fresh[kGroupsPerCall] = {};  // not written before this call: reads the clear value
@@ -159,11 +160,10 @@ void TileShader::merge(size_t calls, const std::vector<PreparedDraw>& draws, con
             }
             const LaneGroup& group = groups_[call.first + uint32_t(g)].group;
             const size_t b = fb.block(group.x, group.y);
-            block[g] = b, half[g] = group.half;
             out_colour[g] = fb.group_colour(b, group.half);
             out_depth[g] = fb.group_depth(b, group.half);
             bool& written = written_[tile_group(group, rect)];
-            fresh[g] = !written;
+            if (has_outputs) block[g] = b, half[g] = group.half, fresh[g] = !written;
             if (written) {
                 in_colour[g] = out_colour[g];
                 in_depth[g] = out_depth[g];
@@ -174,7 +174,7 @@ void TileShader::merge(size_t calls, const std::vector<PreparedDraw>& draws, con
                 written = true;
             }
         }
-        if (outputs_.empty()) {  // one colour buffer: the whole merge in one inlined step
+        if (!has_outputs) {  // one colour buffer: the whole merge in one inlined step
             merge_lanes(state, rgba16f_, call.result.colour, call.depth, Mask::from_bits(call.live), in_colour,
                         in_depth, out_colour, out_depth);
             continue;

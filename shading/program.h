@@ -272,10 +272,12 @@ class FragmentProgram : public FragmentTwin {
 public:
     void shade(const FragmentLanes& in, FragmentResult& out) const override {
         Exec exec;  // one invocation: fresh masks and loop budget
-        const auto result = static_cast<const Derived*>(this)->main(Fragment(in, exec));
-        if constexpr (std::is_same_v<std::decay_t<decltype(result)>, Vec4>) {
-            out.colour = result;
+        const Derived& twin = *static_cast<const Derived*>(this);
+        using Result = std::decay_t<decltype(twin.main(Fragment(in, exec)))>;
+        if constexpr (std::is_same_v<Result, Vec4>) {
+            out.colour = twin.main(Fragment(in, exec));
         } else {
+            const Result result = twin.main(Fragment(in, exec));
             out.colour = result[0];
             if (out.outputs)
                 for (size_t k = 1; k < result.size(); ++k) out.outputs[k - 1] = result[k];
@@ -283,7 +285,7 @@ public:
         out.discarded = exec.discarded();
     }
     int output_count() const override {
-        using Result = decltype(std::declval<const Derived&>().main(std::declval<const Fragment&>()));
+        using Result = std::decay_t<decltype(std::declval<const Derived&>().main(std::declval<const Fragment&>()))>;
         if constexpr (std::is_same_v<Result, Vec4>) return 1;
         else return int(std::tuple_size_v<Result>);
     }
