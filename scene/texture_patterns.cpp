@@ -87,11 +87,16 @@ void TexelBudget::take(uint64_t bytes, const std::string& field) {
 
 Texture read_texture_field(JsonReader& scene, const std::string& key, const std::string& sampler,
                            TexelBudget& budget) {
+    JsonReader r = scene.object(key);
+    return read_texture_object(r, sampler, budget);
+}
+
+Texture read_texture_object(JsonReader& r, const std::string& sampler, TexelBudget& budget) {
     // One space per field path, declared the first time it is read and
     // kept (a reader holds a pointer to it).
     static std::mutex mutex;
     static std::map<std::string, std::unique_ptr<ParamSpace>> spaces;
-    const std::string path = scene.field(key);
+    const std::string path = ParamSpace::normalise(r.path());  // an array's elements share "layers[]"
     const ParamSpace* space = nullptr;
     {
         const std::lock_guard<std::mutex> lock(mutex);
@@ -102,7 +107,6 @@ Texture read_texture_field(JsonReader& scene, const std::string& key, const std:
         }
         space = s.get();
     }
-    JsonReader r = scene.object(key);
     r.bind(*space);
     return read_pattern_texture(r, sampler, budget);
 }

@@ -47,5 +47,8 @@ Texture read_pattern_texture(JsonReader& r, const std::string& sampler, TexelBud
 // `sampler`.
 Texture read_texture_field(JsonReader& scene, const std::string& key, const std::string& sampler,
                            TexelBudget& budget);
+// The same for a texture object already at hand (an element of an array of
+// samplers: `"textures": [{...}, {...}]` for `uniform sampler2D textures[2]`).
+Texture read_texture_object(JsonReader& r, const std::string& sampler, TexelBudget& budget);
 
 }  // namespace st

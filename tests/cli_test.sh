@@ -832,6 +832,13 @@ PY
       grep -q 'pass.outputs.push_back({"gAlbedoSpec"});' "$work/gbuf/kernels/gbuf_scene.cpp" &&
       grep -q "out vec3 gPosition: return Vec4(gPosition, ...) with 0.0" "$work/gbuf/kernels/gbuf_frag.cpp" ||
       fail "new-technique: a twin of several outputs"
+    # An array of samplers: one texture object each, bound by GL's element names.
+    printf '#version 330 core\nlayout(location = 0) in vec4 v_normal;\nout vec4 c;\nuniform sampler2D layers[2];\nvoid main() { c = texture(layers[1], v_normal.xy); }\n' \
+      >"$work/layers.frag"
+    "$bin" new-technique layered "$ex/wrap.vert" "$work/layers.frag" --out "$work/layered" >/dev/null || fail "new-technique: an array of samplers"
+    grep -q 'st::read_texture_object(items0\[size_t(i0)\], "layers\[" + std::to_string(i0) + "\]", budget)' "$work/layered/kernels/layered_scene.cpp" &&
+      python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert len(d["layers"]) == 2 and "pattern" in d["layers"][1], d' \
+        "$work/layered/scenes/layered-first.json" || fail "new-technique: the scene of an array of samplers"
     ;;
 
   scene_docs)

@@ -123,7 +123,7 @@ std::string block_key(const GlslStage& s, const std::string& storage, const std:
 
 void check_uniform_type(const GlslStage& s, const GlslVariable& u, std::set<std::string>& structs_used) {
     if (is_sampler(u.type)) {
-        if (u.array_size) refuse(s, u.line, "an array of samplers ('" + u.name + "'): give each sampler its own uniform");
+
         return;
     }
     if (is_uniform_field_type(u.type)) return;
@@ -534,7 +534,7 @@ std::string fragment_file(const Names& n, const Interface& in, const GlslStage& 
     }
     for (const GlslVariable& u : in.fragment_uniforms) {
         const std::string at = u.array_size ? "[i]" : "";
-        if (is_sampler(u.type)) o << "    //   texture(" << u.name << ", p)  ->  texture(*" << u.name << "_, p)\n";
+        if (is_sampler(u.type)) o << "    //   texture(" << u.name << at << ", p)  ->  texture(*" << u.name << "_" << at << ", p)\n";
         else if (components(u.type))
             o << "    //   " << u.name << at << "  ->  " << lane_type(components(u.type)) << "(" << u.name << "_" << at << ")\n";
         else if (u.type == "double" || u.type.rfind("dvec", 0) == 0)
@@ -580,6 +580,17 @@ void read_lines(const Interface& in, const GlslVariable& u, const std::string& r
     for (const GlslStruct& s : in.structs)
         if (s.name == u.type) st = &s;
     const std::string d = std::to_string(depth);
+    if (is_sampler(u.type) && u.array_size) {  // at the top only (check_uniform_type): one texture object each
+        const std::string n = std::to_string(u.array_size);
+        o << indent << "{  // uniform " << u.type << " " << u.name << "[" << n << "]\n"
+          << indent << "    std::vector<st::JsonReader> items" << d << " = " << r << ".objects(\"" << u.name << "\", " << n
+          << ", " << n << ");\n"
+          << indent << "    for (int i" << d << " = 0; i" << d << " < " << n << "; ++i" << d << ")\n"
+          << indent << "        draw.textures.push_back(st::read_texture_object(items" << d << "[size_t(i" << d
+          << ")], \"" << u.name << "[\" + std::to_string(i" << d << ") + \"]\", budget));\n"
+          << indent << "}\n";
+        return;
+    }
     if (is_sampler(u.type)) {  // at the top only (check_uniform_type)
         o << indent << "draw.textures.push_back(st::read_texture_field(" << r << ", \"" << u.name << "\", \"" << u.name
           << "\", budget));  // uniform " << u.type << " " << u.name << "\n";
