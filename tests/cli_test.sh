@@ -446,6 +446,11 @@ PY
       "$bin" render conformance-loop-exit --backend cpu --set textures.0.sampler=texture0
     expect_refused "interface: a uniform set twice" "uniform 'dir' is set twice" \
       "$bin" render conformance-loop-exit --set 'uniforms.2={"name":"dir","float":1}'
+    expect_refused "interface: an index past an array's end" \
+      "uniform 'palette\[4\]': palette is vec3\[4\] in uniform_types.frag (indices 0 to 3)" \
+      "$bin" render conformance-uniform-types --set 'uniforms.0.name=palette[4]'
+    expect_refused "interface: a struct member the declaration lacks" "struct Light (uniform_types.frag) has no member 'colr'" \
+      "$bin" render conformance-uniform-types --set 'uniforms.4.name=lights[0].colr'
     expect_refused "interface: an input no vertex output meets" \
       "unlocated.frag reads 'vUV', which textured.vert does not write" \
       "$bin" compare conformance-unlocated --set vertex=textured
