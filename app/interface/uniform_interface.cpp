@@ -1,7 +1,8 @@
 // uniform_interface.cpp: see uniform_interface.h. The declarations are
 // flattened into the names GL gives each value ("lights[2].colour",
-// "Matrices.projection"), each with its GLSL type and whether its stage
-// uses it; a draw's uniforms and textures are then looked up by name.
+// "Matrices.projection"), each with its GLSL type and its file; a draw's
+// uniforms and textures are looked up by name, and GL's active uniforms
+// (where the run has GL) in the names the draw set.
 #include "app/interface/uniform_interface.h"
 
 #include <algorithm>
@@ -12,9 +13,9 @@
 #include <set>
 #include <tuple>
 
-#include "gl/gl_renderer.h"
 #include "app/interface/varying_interface.h"
 #include "app/tool_data.h"
+#include "gl/gl_renderer.h"
 #include "gl/shader_files.h"
 #include "kernels/registry.h"
 #include "scene/input_error.h"
