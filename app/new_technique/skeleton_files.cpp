@@ -49,6 +49,27 @@ struct Interface {
     std::vector<GlslStruct> structs;                                        // those the uniforms use
 };
 
+// Each variable's location: its layout(location), else the next one no
+// variable declares, in declaration order (attribute columns, varying
+// slots and outputs are all placed so).
+std::vector<int> locations_of(const std::vector<GlslVariable>& vars) {
+    std::set<int> taken;
+    for (const GlslVariable& v : vars)
+        if (v.location >= 0) taken.insert(v.location);
+    std::vector<int> out;
+    int next = 0;
+    for (const GlslVariable& v : vars) {
+        if (v.location >= 0) {
+            out.push_back(v.location);
+            continue;
+        }
+        while (taken.count(next)) ++next;
+        taken.insert(next);
+        out.push_back(next);
+    }
+    return out;
+}
+
 // What the fragment twin's main() returns: one Vec4, or one per output location.
 std::string result_type(const Interface& in) {
     return in.outputs.size() == 1 ? "st::Vec4" : "st::FragmentOutputs<" + std::to_string(in.outputs.size()) + ">";
@@ -165,19 +186,12 @@ Interface interface_of(const GlslStage& vert, const GlslStage& frag) {
     // Attributes: column N of each vertex is location N, and an input
     // without a location takes the next free column (the scene names every
     // column's input, so GL binds it by name: VertexArray::names).
-    std::set<int> columns;
-    for (const GlslVariable& v : vert.inputs)
-        if (v.location >= 0) columns.insert(v.location);
-    int next_column = 0;
-    for (const GlslVariable& v : vert.inputs) {
+    const std::vector<int> columns = locations_of(vert.inputs);
+    for (size_t k = 0; k < vert.inputs.size(); ++k) {
+        const GlslVariable& v = vert.inputs[k];
         if (!components(v.type) || v.array_size)
             refuse(vert, v.line, "input " + v.type + " " + v.name + ": attributes are float, vec2, vec3 or vec4");
-        int column = v.location;
-        if (column < 0) {
-            while (columns.count(next_column)) ++next_column;
-            column = next_column;
-            columns.insert(column);
-        }
+        const int column = columns[k];
         if (column >= kAttributes) refuse(vert, v.line, "input '" + v.name + "' in column " + std::to_string(column) + ": at most 16 attributes");
         in.attributes.push_back({v.name, v.type, column});
     }
@@ -185,24 +199,16 @@ Interface interface_of(const GlslStage& vert, const GlslStage& frag) {
     // Varyings: the vertex outputs' slots (its location, else the next free one).
     std::vector<GlslVariable> outs = vert.outputs;
     for (const GlslVariable& m : block_members(vert, "out")) outs.push_back(m);
-    std::set<int> taken;
-    for (const GlslVariable& v : outs)
-        if (v.location >= 0) taken.insert(v.location);
-    int next = 0;
-    for (const GlslVariable& v : outs) {
+    const std::vector<int> slots = locations_of(outs);
+    for (size_t k = 0; k < outs.size(); ++k) {
+        const GlslVariable& v = outs[k];
         if (!varying_type(v.type).components || v.array_size)
             refuse(vert, v.line, "output " + v.type + " " + v.name + ": varyings are float, int and uint and their vectors "
                                  "(one slot each; arrays, structs, doubles and matrices are not modelled)");
         Varying y;
         y.vertex_name = v.name, y.constant = constant_name(v.name), y.type = v.type;
         y.gl_name = block_key(vert, "out", v.name);
-        if (v.location >= 0) {
-            y.slot = v.location;
-        } else {
-            while (taken.count(next)) ++next;
-            y.slot = next;
-            taken.insert(next);
-        }
+        y.slot = slots[k];
         if (y.slot >= kSlots) refuse(vert, v.line, "output '" + v.name + "' in slot " + std::to_string(y.slot) + ": at most 8 varyings (slots 0-7)");
         in.varyings.push_back(y);
     }
@@ -236,20 +242,14 @@ Interface interface_of(const GlslStage& vert, const GlslStage& frag) {
         refuse(frag, frag.outputs.back().line, "at most " + std::to_string(kMaxOutputs) + " outputs (locations 0-3)");
     // Several outputs without locations take the free ones in declaration
     // order, and the scene binds them by name (glBindFragDataLocation).
-    std::set<int> taken_outputs;
-    for (const GlslVariable& v : frag.outputs)
-        if (v.location >= 0) taken_outputs.insert(v.location);
-    int next_output = 0;
-    for (const GlslVariable& v : frag.outputs) {
+    const std::vector<int> locations = locations_of(frag.outputs);
+    for (size_t k = 0; k < frag.outputs.size(); ++k) {
+        const GlslVariable& v = frag.outputs[k];
         if (!components(v.type) || v.array_size)
             refuse(frag, v.line, "output " + v.type + " " + v.name + ": outputs are float, vec2, vec3 or vec4 (float targets)");
+        if (v.location < 0 && frag.outputs.size() > 1) in.outputs_by_name = true;
         GlslVariable o = v;
-        if (o.location < 0) {
-            while (taken_outputs.count(next_output)) ++next_output;
-            o.location = next_output;
-            taken_outputs.insert(next_output);
-            if (frag.outputs.size() > 1) in.outputs_by_name = true;
-        }
+        o.location = locations[k];
         in.outputs.push_back(o);
     }
     std::sort(in.outputs.begin(), in.outputs.end(), [](const GlslVariable& a, const GlslVariable& b) { return a.location < b.location; });
