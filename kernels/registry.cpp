@@ -39,6 +39,7 @@ void add_builtin_twins(TwinRegistry& r) {
     r.add_fragment("thin_slab_baseline", [] { return std::make_unique<ThinSlabBaselineFragment>(); });
     r.add_fragment("thin_slab_sweep", [] { return std::make_unique<ThinSlabSweepFragment>(); });
     r.add_fragment("loop_exit", [] { return std::make_unique<LoopExitFragment>(); });
+    r.add_fragment("parallax_loop", [] { return std::make_unique<ParallaxLoopFragment>(); });
     r.add_fragment("branch_texture", [] { return std::make_unique<BranchTextureFragment>(); });
     r.add_fragment("derivatives", [] { return std::make_unique<DerivativesFragment>(); });
     r.add_fragment("discard", [] { return std::make_unique<DiscardFragment>(); });

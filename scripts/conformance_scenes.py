@@ -344,3 +344,30 @@ for show, tag, what in [(0, "flat-int", "a flat ivec4 of bit patterns no arithme
       "uniforms": [{"name": "reach", "float": 1.25}, {"name": "show", "int": show}],
       "criteria": {"nonfinite": "identical", "rationale": "Flat inputs are the provoking vertex's bits, NaN payloads and denormals included; smooth and noperspective ones follow llvmpipe's clipper and planes operation for operation: every bit must match."},
       "triangles": varyings_triangles()})
+# The parallax benchmark (issue 30): a user's shader on the general sampler
+# path at 800x600, the maps from make-bricks-maps.py. A colour is the vector
+# to the eye at that corner in tangent space (affine over a plane, so
+# interpolating it is exact); the uv covers the bricks twice across, 1.28
+# texels a pixel (trilinear between levels 0 and 1).
+def parallax(name, desc, height_scale, view):
+    W, H = 800, 600
+    corners = [(0, 0), (W, 0), (W, H), (0, H)]
+    uv = {c: [2.0 * c[0] / W, 1.5 * c[1] / H] for c in corners}
+    eye = {c: view(c[0] / W, c[1] / H) + [1] for c in corners}
+    tri = lambda a, b, c: {"positions": [list(a), list(b), list(c)], "colours": [eye[a], eye[b], eye[c]],
+                           "uvs": [uv[a], uv[b], uv[c]]}
+    maps = [dict(sampler=s, pattern="file", file="textures/" + f, format="rgba8", colour_space="linear",
+                min_filter="linear_mipmap_linear", mag_filter="linear", wrap="repeat", mipmaps="box")
+            for s, f in (("depth_map", "bricks-512-depth.png"), ("colour_map", "bricks-512-colour.png"))]
+    write(f"parallax-{name}", {"kind": "conformance", "description": desc, "width": W, "height": H,
+      "fragment": "parallax_loop",
+      "uniforms": [{"name": "height_scale", "float": height_scale}, {"name": "light_dir", "vec3": [0.48, 0.6, 0.64]}],
+      "textures": maps,
+      "triangles": [tri(corners[0], corners[1], corners[2]), tri(corners[0], corners[2], corners[3])],
+      "criteria": {"rationale": "A benchmark of the general sampler path (issue 30) and a conformance scene: every bit must match."}})
+parallax("head-on", "Parallax occlusion mapping as tutorials write it (implicit-LOD texture() in a while loop each lane leaves at its own step, trilinear RGBA8 bricks), 800x600, the eye above the middle: 8 to 11 layers. The benchmark of a user's shader (issue 30).",
+         0.05, lambda x, y: [round(0.5 - x, 4), round(0.5 - y, 4), 1.2])
+parallax("grazing", "Parallax occlusion mapping as head-on, the eye far to the left and low: the ray 64 to 74 degrees from the normal, 27 to 30 layers of 2 to 3 texels.",
+         0.05, lambda x, y: [round(-2.0 - x, 4), round(0.5 - y, 4), 1.0])
+parallax("deep", "Parallax occlusion mapping as head-on with twice the depth (0.1 of the map's width) at 45 degrees: long marches into the joints.",
+         0.1, lambda x, y: [round(-1.0 - 0.5 * x, 4), round(0.5 - y, 4), 1.3])

@@ -31,6 +31,19 @@ private:
     float threshold_ = 0.0f;
 };
 
+class ParallaxLoopFragment final : public FragmentProgram<ParallaxLoopFragment> {  // parallax_loop.frag
+public:
+    void bind(const Bindings& b) override;
+    uint32_t inputs_read() const override;
+    Vec4 main(const Fragment& frag) const;
+
+private:
+    const Sampler2D* depth_map_ = nullptr;
+    const Sampler2D* colour_map_ = nullptr;
+    float height_scale_ = 0.0f;
+    glm::vec3 light_dir_{0.0f};
+};
+
 class BranchTextureFragment final : public FragmentProgram<BranchTextureFragment> {  // branch_texture.frag
 public:
     void bind(const Bindings& b) override;
