@@ -77,6 +77,33 @@ ST_INLINE bool fetch_window_groups(const int32_t* rgba8, int width, int height, 
     t11 = Int(IntV(_mm512_permutex2var_epi32(b_lo, index(y1, x1), b_hi)));
     return true;
 }
+#else
+// The same for one 8-lane group (4x2 pixels) without reductions: the window
+// starts at lane 0's taps and is 8 texels by 2 rows for each row of taps,
+// so four row loads and two permutes a tap. Lane 0 is the group's top-left
+// pixel; where its taps are not the lowest (a texture mirrored on the
+// screen, lanes of a loop that moved apart) this returns false.
+ST_INLINE bool fetch_window_group(const int32_t* rgba8, int width, int height, const LinearTaps8& u, const LinearTaps8& v,
+                                  Int& t00, Int& t10, Int& t01, Int& t11) {
+    const int32_t u_base = u.i0[0], v0_base = v.i0[0], v1_base = v.i1[0];
+    const Int x0 = u.i0 - Int(u_base), x1 = u.i1 - Int(u_base), y0 = v.i0 - Int(v0_base), y1 = v.i1 - Int(v1_base);
+    using UV = uint32_t __attribute__((vector_size(kLanes * 4)));
+    const auto outside = [](Int d, uint32_t n) __attribute__((always_inline)) { return IntV(UV(d.v) >= n); };
+    const IntV bad = outside(x0, kLanes) | outside(x1, kLanes) | outside(y0, 2) | outside(y1, 2);
+    if (simd::any(Mask(bad))) return false;
+    auto row = [&](int32_t y) __attribute__((always_inline)) {
+        // A row past the last is loaded but never picked (in bounds: the
+        // texels have kLanes of padding).
+        return Int::load(&rgba8[size_t(std::min(y, height - 1)) * size_t(width) + size_t(u_base)]);
+    };
+    const Int a0 = row(v0_base), a1 = row(v0_base + 1), b0 = row(v1_base), b1 = row(v1_base + 1);
+    const Mask second0 = y0 != Int(0), second1 = y1 != Int(0);
+    t00 = select(second0, simd::permute(a1, x0), simd::permute(a0, x0));
+    t10 = select(second0, simd::permute(a1, x1), simd::permute(a0, x1));
+    t01 = select(second1, simd::permute(b1, x0), simd::permute(b0, x0));
+    t11 = select(second1, simd::permute(b1, x1), simd::permute(b0, x1));
+    return true;
+}
 #endif
 
 ST_INLINE bool fetch_window(const int32_t* rgba8, int width, const LinearTaps8& u, const LinearTaps8& v, Int& t00, Int& t10,
@@ -338,7 +365,8 @@ ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level,
         windowed = fetch_window_groups(rows, w, level.height[0], u, v, t00, t10, t01, t11) ||
                    fetch_window(rows, w, u, v, t00, t10, t01, t11);
 #else
-        windowed = fetch_window(rows, w, u, v, t00, t10, t01, t11);
+        windowed = fetch_window_group(rows, w, level.height[0], u, v, t00, t10, t01, t11) ||
+                   fetch_window(rows, w, u, v, t00, t10, t01, t11);
 #endif
     }
     if (!windowed) {
@@ -373,10 +401,11 @@ Vec4 Sampler2D::filter_levels(const Vec2& st, const LevelChoice& c, TextureFilte
     if (aos) {
         Int rb0, ga0;
         filter_unorm8(st, l0, filter, false, rb0, ga0);
-        if (c.two_levels) {
+        const Int wl = level_weight8(c.fpart);
+        if (c.two_levels && simd::any(wl != Int(0))) {
             Int rb1, ga1;
             filter_unorm8(st, level_lanes(c.level1), filter, false, rb1, ga1);
-            blend_levels8(c.fpart, rb0, ga0, rb1, ga1);
+            blend_levels8(wl, rb0, ga0, rb1, ga1);
         }
         return unpack_pairs(rb0, ga0);
     }

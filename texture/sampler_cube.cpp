@@ -189,10 +189,11 @@ Vec4 SamplerCube::sample_at(const Face& f, const LevelChoice& c) const {
     if (aos_) {
         Int rb0, ga0;
         nearest_unorm8(f, c.level0, rb0, ga0);
-        if (c.two_levels) {
+        const Int wl = level_weight8(c.fpart);
+        if (c.two_levels && simd::any(wl != Int(0))) {
             Int rb1, ga1;
             nearest_unorm8(f, c.level1, rb1, ga1);
-            blend_levels8(c.fpart, rb0, ga0, rb1, ga1);
+            blend_levels8(wl, rb0, ga0, rb1, ga1);
         }
         return unpack_pairs(rb0, ga0);
     }

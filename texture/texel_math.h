@@ -216,8 +216,11 @@ ST_INLINE Vec4 blend_levels(Float fpart, const Vec4& c0, const Vec4& c1, Mask bl
                               lerp_float(f, c0.w, c1.w)),
                   c0);
 }
-ST_INLINE void blend_levels8(Float fpart, Int& rb0, Int& ga0, Int rb1, Int ga1) {
-    const Int wl = itrunc(fpart * Float(256.0f));
+// The 8-bit weight of level1, trunc(fpart * 256). Where it is 0 in every
+// lane, lerp8 gives level0's bytes as they are: level1 need not be filtered
+// (magnified quads, LODs at the last level, fractions under 1/256).
+ST_INLINE Int level_weight8(Float fpart) { return itrunc(fpart * Float(256.0f)); }
+ST_INLINE void blend_levels8(Int wl, Int& rb0, Int& ga0, Int rb1, Int ga1) {
     const Int w = wl | (wl << 16);
     rb0 = lerp8_pairs(w, rb0, rb1);
     ga0 = lerp8_pairs(w, ga0, ga1);
