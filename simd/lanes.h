@@ -409,6 +409,7 @@ ST_INLINE void Float::store_groups(float* const* p) const {
 // 2^16; mulhrs16 is pmulhrsw, (a * b + 0x4000) >> 15 per half.
 using U16V = uint16_t __attribute__((vector_size(kLanes * 4)));
 using I16V = int16_t __attribute__((vector_size(kLanes * 4)));
+ST_INLINE Int add16(Int a, Int b) { return Int(IntV(U16V(a.v) + U16V(b.v))); }
 ST_INLINE Int sub16(Int a, Int b) { return Int(IntV(U16V(a.v) - U16V(b.v))); }
 ST_INLINE Int shl16(Int a, int n) { return Int(IntV(U16V(a.v) << n)); }
 ST_INLINE Int mulhrs16(Int a, Int b) {

@@ -381,7 +381,7 @@ ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level,
     }
     // Two channels per lane, one in each 16-bit half (R and B, then G and
     // A), lerped at once.
-    const Int wu = u.weight | (u.weight << 16), wv = v.weight | (v.weight << 16);
+    const Int wu = lerp8_weight(u.weight), wv = lerp8_weight(v.weight);
     // Inlined by hand (a lambda here stays out of line and spills its
     // vectors): R and B with shift 0, G and A with shift 8.
     auto pairs = [&](int shift) __attribute__((always_inline)) {
@@ -545,8 +545,8 @@ ST_INLINE Int Sampler2D::alpha_bilinear(const Vec2& st, const LevelLanes& level)
     }
     // [a00 | a01 << 16] against [a10 | a11 << 16]: the lower row in the low
     // half, the upper in the high one.
-    const Int rows = lerp8_pairs(u.weight | (u.weight << 16), q & Int(0x00ff00ff), (q >> 8) & Int(0x00ff00ff));
-    return lerp8_pairs(v.weight, rows & Int(0xff), (rows >> 16) & Int(0xff));
+    const Int rows = lerp8_pairs(lerp8_weight(u.weight), q & Int(0x00ff00ff), (q >> 8) & Int(0x00ff00ff));
+    return lerp8_pairs(lerp8_weight(v.weight), rows & Int(0xff), (rows >> 16) & Int(0xff));
 }
 
 Float Sampler2D::sample_grad_alpha(const Vec2& st, const texel::LevelChoice& c) const {
@@ -554,8 +554,7 @@ Float Sampler2D::sample_grad_alpha(const Vec2& st, const texel::LevelChoice& c) 
     if (alpha_quads_.empty()) return sample_grad(st, c).w;
     Int a = alpha_bilinear(st, level_lanes(c.level0));
     if (c.two_levels) {
-        const Int wl = itrunc(c.fpart * Float(256.0f));
-        a = lerp8_pairs(wl, a, alpha_bilinear(st, level_lanes(c.level1)));
+        a = lerp8_pairs(lerp8_weight(level_weight8(c.fpart)), a, alpha_bilinear(st, level_lanes(c.level1)));
     }
     return unorm8_to_float(a);
 }

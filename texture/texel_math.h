@@ -111,15 +111,22 @@ ST_INLINE LinearTaps8 linear_taps_fixed(Float s, Int size, Float size_f, bool po
     return t;
 }
 
-// 8-bit lerp with an 8-bit weight, as pmulhrsw computes it in
-// lp_build_lerp_simple: ((w * (d << 7)) >> 14 + 1) >> 1, kept to 8 bits and
-// added to v0 modulo 256; here on two channels at once, one per 16-bit half
-// of each lane, with the weight in both halves (pmulhrsw itself where the
-// build has it).
-ST_INLINE Int lerp8_pairs(Int w, Int v0, Int v1) {
-    const Int rounded = simd::mulhrs16(w, simd::shl16(simd::sub16(v1, v0), 7));
-    return (v0 + (rounded & Int(0x00ff00ff))) & Int(0x00ff00ff);
+// An 8-bit lerp's weight w in [0, 255], in both 16-bit halves of each lane
+// and scaled for pmulhrsw: w << 7 (at most 32640, an int16). Made once per
+// weight, shared by every lerp that uses it.
+ST_INLINE Int lerp8_weight(Int w) {
+    const Int scaled = w << 7;
+    return scaled | (scaled << 16);
 }
+
+// 8-bit lerp as lp_build_lerp_simple computes it with pmulhrsw,
+// v0 + ((w * ((v1 - v0) << 7) + 0x4000) >> 15) kept to 8 bits, on two
+// channels at once, one per 16-bit half of each lane (bytes in [0, 255]);
+// `w` from lerp8_weight. The product is the same as llvmpipe's
+// ((w << 7) * d == w * (d << 7), both factors within int16), and the
+// rounded step never exceeds |v1 - v0| in size, so v0 plus it stays in
+// [0, 255] and a 16-bit add is the 8-bit add modulo 256 without masks.
+ST_INLINE Int lerp8_pairs(Int w, Int v0, Int v1) { return simd::add16(v0, simd::mulhrs16(w, simd::sub16(v1, v0))); }
 
 // Float lerp: fmuladd(t, v1 - v0, v0), as lp_build_mad fuses it.
 ST_INLINE Float lerp_float(Float t, Float v0, Float v1) { return fmuladd(t, v1 - v0, v0); }
@@ -221,7 +228,7 @@ ST_INLINE Vec4 blend_levels(Float fpart, const Vec4& c0, const Vec4& c1, Mask bl
 // (magnified quads, LODs at the last level, fractions under 1/256).
 ST_INLINE Int level_weight8(Float fpart) { return itrunc(fpart * Float(256.0f)); }
 ST_INLINE void blend_levels8(Int wl, Int& rb0, Int& ga0, Int rb1, Int ga1) {
-    const Int w = wl | (wl << 16);
+    const Int w = lerp8_weight(wl);
     rb0 = lerp8_pairs(w, rb0, rb1);
     ga0 = lerp8_pairs(w, ga0, ga1);
 }
