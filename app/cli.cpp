@@ -14,6 +14,7 @@
 #include "app/commands/explore.h"
 #include "app/commands/new_technique.h"
 #include "app/commands/probe.h"
+#include "app/commands/sampler_rates.h"
 #include "app/commands/fields.h"
 #include "app/error_line.h"
 #include "app/interface/uniform_interface.h"
@@ -215,7 +216,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
 
     int frames = 100;
     auto* bench = app.add_subcommand("bench", "frames per second on both backends, interleaved");
-    bench->add_option("scenes", scenes, "built-in scene names or .json paths")->required();
+    auto* bench_scenes = bench->add_option("scenes", scenes, "built-in scene names or .json paths");
     bench->add_option("--frames", frames, "measured frames per backend (after warm-up)")->check(CLI::Range(1, 100000));
     bench->add_flag("--json", json, "one JSON object per scene and backend");
     bool scaling = false, per_pass = false;
@@ -224,6 +225,14 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
     bench->add_flag("--passes", per_pass,
                     "also time each pass on both backends (the frame cut after each, interleaved) and list the "
                     "profiles' build times apart");
+    bool samplers = false;
+    bench->add_flag("--samplers", samplers,
+                    "instead of scenes: samples per second of each sampler entry point, format and min filter "
+                    "on both backends (one conformance read a pixel, 512x512)")
+        ->excludes(bench_scenes);
+    bench->callback([&] {
+        if (!samplers && scenes.empty()) throw CLI::ValidationError("bench: name the scenes to measure, or --samplers");
+    });
     add_common(bench, common, gl_given);
 
     st::SlabOptions slab_options;
@@ -412,6 +421,7 @@ int run_cli(int argc, char** argv, const std::function<void()>& setup) {
         if (*probe) return st::cmd_probe(probe_scene, probe_json, common);
         if (*fields) return st::cmd_fields(field_kinds);
         if (*new_technique) return st::cmd_new_technique(technique_name, technique_vert, technique_frag, technique_out);
+        if (*bench && samplers) return st::cmd_bench_samplers(frames, json, common);
         if (*bench) return st::cmd_bench(scenes, frames, json, scaling, per_pass, common);
         if (*sweep) {
             if (technique == "relief") return st::cmd_sweep_relief(out_dir, sweep_frames, common);

@@ -1318,6 +1318,20 @@ PY
     python3 -c "import sys; sys.exit(0 if 0 < $scaling < 100 else 1)" || fail "bench: scaling $scaling not a ratio"
     "$bin" bench triangles-basic --frames 2 --scaling >"$work/scaling.txt"
     grep -q "scaling" "$work/scaling.txt" || fail "bench: no scaling column"
+    # --samplers: every entry point, format and min filter, each read
+    # llvmpipe's to the bit (else exit 1); scenes and --samplers exclude
+    # each other, and bench without either says so in one line.
+    "$bin" bench --samplers --frames 1 --json >"$work/samplers.jsonl"
+    [ "$(wc -l <"$work/samplers.jsonl")" -eq 108 ] || fail "bench --samplers: expected 108 cases"
+    for entry in texture textureLod textureGrad "cube texture" "cube textureLod" "cube textureGrad"; do
+      [ "$(grep -c "\"entry\":\"$entry\"" "$work/samplers.jsonl")" -ge 16 ] || fail "bench --samplers: $entry missing"
+    done
+    [ "$(grep -c '"differing_pixels":0' "$work/samplers.jsonl")" -eq 108 ] || fail "bench --samplers: bits differ"
+    grep -q '"cpu_msamples_per_s"' "$work/samplers.jsonl" || fail "bench --samplers: no rate"
+    set +e; "$bin" bench >"$work/stdout" 2>"$work/stderr"; rc=$?; set -e
+    [ "$rc" -eq 2 ] && [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "bench without scenes: exit $rc"
+    set +e; "$bin" bench --samplers triangles-basic >"$work/stdout" 2>"$work/stderr"; rc=$?; set -e
+    [ "$rc" -eq 2 ] && [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "bench --samplers with a scene: exit $rc"
     ;;
 
   slab)
