@@ -191,6 +191,33 @@ ST_INLINE unsigned bits(Mask m) {
 ST_INLINE bool any(Mask m) { return bits(m) != 0; }
 ST_INLINE bool all(Mask m) { return bits(m) == (1u << kLanes) - 1; }
 ST_INLINE bool none(Mask m) { return bits(m) == 0; }
+// (x >> 8) & 0x00ff00ff per lane: bytes 1 and 3 moved down to bytes 0
+// and 2 (a texel's green and alpha as two 16-bit halves), one pshufb.
+ST_INLINE Int odd_bytes(Int x) {
+#if defined(ST_SIMD_AVX512) && defined(__AVX512BW__)
+    const __m512i pick = _mm512_set4_epi32(0x800f800d, 0x800b8009, 0x80078005, 0x80038001);
+    return Int(IntV(_mm512_shuffle_epi8(__m512i(x.v), pick)));
+#elif defined(ST_SIMD_AVX2)
+    const __m256i pick = _mm256_setr_epi32(0x80038001, 0x80078005, 0x800b8009, 0x800f800d, 0x80038001, 0x80078005,
+                                           0x800b8009, 0x800f800d);
+    return Int(IntV(_mm256_shuffle_epi8(__m256i(x.v), pick)));
+#else
+    return Int(IntV((x.v >> 8) & 0x00ff00ff));
+#endif
+}
+
+// Whether any bit of any lane is set (ptest).
+ST_INLINE bool any_bit(Int x) {
+#if defined(ST_SIMD_AVX512)
+    return _mm512_test_epi32_mask(__m512i(x.v), __m512i(x.v)) != 0;
+#elif defined(ST_SIMD_AVX2)
+    return !_mm256_testz_si256(__m256i(x.v), __m256i(x.v));
+#else
+    int32_t r = 0;
+    for (int i = 0; i < kLanes; ++i) r |= x.v[i];
+    return r != 0;
+#endif
+}
 
 ST_INLINE Int bit_cast_int(Float x) { return Int(IntV(x.v)); }
 ST_INLINE Float bit_cast_float(Int x) { return Float(FloatV(x.v)); }

@@ -125,6 +125,22 @@ TEST(Lanes, MasksAndBits) {
     EXPECT_EQ(bits(Float(std::numeric_limits<float>::quiet_NaN()) < Float(1.0f)), 0u);
 }
 
+TEST(Lanes, OddBytesAndAnyBit) {
+    Int x;
+    for (int lane = 0; lane < kLanes; ++lane) x.set(lane, int32_t(0x9e3779b9u * unsigned(lane + 1)));
+    const Int odd = odd_bytes(x);
+    for (int lane = 0; lane < kLanes; ++lane)
+        EXPECT_EQ(uint32_t(odd[lane]), (uint32_t(x[lane]) >> 8) & 0x00ff00ffu) << lane;
+    EXPECT_FALSE(any_bit(Int(0)));
+    for (int lane = 0; lane < kLanes; ++lane) {
+        Int one(0);
+        one.set(lane, int32_t(0x80000000u));
+        EXPECT_TRUE(any_bit(one)) << lane;
+        one.set(lane, 1);
+        EXPECT_TRUE(any_bit(one)) << lane;
+    }
+}
+
 TEST(Lanes, PermuteReduceAndMulhrs) {
     Int table, idx;
     for (int lane = 0; lane < kLanes; ++lane) {

@@ -87,10 +87,10 @@ ST_INLINE bool fetch_window_group(const int32_t* rgba8, int width, int height, c
                                   Int& t00, Int& t10, Int& t01, Int& t11) {
     const int32_t u_base = u.i0[0], v0_base = v.i0[0], v1_base = v.i1[0];
     const Int x0 = u.i0 - Int(u_base), x1 = u.i1 - Int(u_base), y0 = v.i0 - Int(v0_base), y1 = v.i1 - Int(v1_base);
-    using UV = uint32_t __attribute__((vector_size(kLanes * 4)));
-    const auto outside = [](Int d, uint32_t n) __attribute__((always_inline)) { return IntV(UV(d.v) >= n); };
-    const IntV bad = outside(x0, kLanes) | outside(x1, kLanes) | outside(y0, 2) | outside(y1, 2);
-    if (simd::any(Mask(bad))) return false;
+    // Inside means x0, x1 in [0, kLanes) and y0, y1 in [0, 2): no bit set
+    // outside the low ones (a negative difference has the sign bit).
+    const Int bad = ((x0 | x1) & Int(~(kLanes - 1))) | ((y0 | y1) & Int(~1));
+    if (simd::any_bit(bad)) return false;
     auto row = [&](int32_t y) __attribute__((always_inline)) {
         // A row past the last is loaded but never picked (in bounds: the
         // texels have kLanes of padding).
@@ -385,7 +385,7 @@ ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level,
     // Inlined by hand (a lambda here stays out of line and spills its
     // vectors): R and B with shift 0, G and A with shift 8.
     auto pairs = [&](int shift) __attribute__((always_inline)) {
-        auto half_bytes = [shift](Int t) __attribute__((always_inline)) { return (t >> shift) & Int(0x00ff00ff); };
+        auto half_bytes = [shift](Int t) __attribute__((always_inline)) { return shift ? green_alpha(t) : red_blue(t); };
         const Int bottom = lerp8_pairs(wu, half_bytes(t00), half_bytes(t10));
         const Int top = lerp8_pairs(wu, half_bytes(t01), half_bytes(t11));
         return lerp8_pairs(wv, bottom, top);

@@ -158,7 +158,7 @@ ST_INLINE Float unorm8_to_float(Int k) { return simd::to_float(k) * Float(1.0f /
 // The R and B bytes (rb) or G and A bytes (ga) of packed RGBA8 texels, one
 // per 16-bit half.
 ST_INLINE Int red_blue(Int t) { return t & Int(0x00ff00ff); }
-ST_INLINE Int green_alpha(Int t) { return (t >> 8) & Int(0x00ff00ff); }
+ST_INLINE Int green_alpha(Int t) { return simd::odd_bytes(t); }
 
 ST_INLINE Vec4 unpack_pairs(Int rb, Int ga) {
     return Vec4(unorm8_to_float(rb & Int(0xff)), unorm8_to_float(ga & Int(0xff)), unorm8_to_float(rb >> 16),
