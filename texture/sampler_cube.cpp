@@ -90,6 +90,10 @@ SamplerCube::SamplerCube(const Texture& texture) : tex_(&texture) {
         level_base_.push_back(int32_t(texels));
         texels += size_t(kFaces) * size_t(w) * size_t(w);
     }
+    for (int l = 0; l <= last_level_ && last_level_ < 2 * kLanes; ++l) {
+        size_table_[l / kLanes].set(l % kLanes, level_size_[size_t(l)]);
+        base_table_[l / kLanes].set(l % kLanes, level_base_[size_t(l)]);
+    }
     if (texture.format == TextureFormat::RGBA8) {
         rgba8_.assign(texels + kLanes, 0);
         for (int l = 0; l <= last_level_; ++l) {
@@ -106,20 +110,30 @@ SamplerCube::SamplerCube(const Texture& texture) : tex_(&texture) {
     }
 }
 
-Vec4 SamplerCube::texel(Int level, Int face, Int x, Int y) const {
-    // Every tap is on its face by construction (clamped or remapped).
+ST_INLINE SamplerCube::LevelLanes SamplerCube::level_lanes(Int level) const {
+    // level is in [0, last_level_] on every lane.
+    if (last_level_ < kLanes)
+        return {simd::permute(size_table_[0], level), simd::permute(base_table_[0], level)};
+    if (last_level_ < 2 * kLanes)
+        return {simd::permute2(size_table_[0], size_table_[1], level),
+                simd::permute2(base_table_[0], base_table_[1], level)};
     const Mask all(true);
-    const Int size = simd::gather(level_size_.data(), level, all);
-    const Int index = simd::gather(level_base_.data(), level, all) + (face * size + y) * size + x;
-    return gather_texels(tex_->format == TextureFormat::RGBA8, rgba8_.data(), rgba32_.data(), index, all);
+    return {simd::gather(level_size_.data(), level, all), simd::gather(level_base_.data(), level, all)};
+}
+
+ST_INLINE Vec4 SamplerCube::texel(const LevelLanes& level, Int face, Int x, Int y) const {
+    // Every tap is on its face by construction (clamped or remapped).
+    const Int index = level.base + (face * level.size + y) * level.size + x;
+    return gather_format_texels(tex_->format, rgba8_.data(), rgba32_.data(), index, Mask(true));
 }
 
 void SamplerCube::nearest_unorm8(const Face& f, Int level, Int& rb, Int& ga) const {
-    const Int size = simd::gather(level_size_.data(), level, Mask(true));
+    const LevelLanes l = level_lanes(level);
+    const Int size = l.size;
     const Float size_f = simd::to_float(size);
     const Int x = nearest_texel(f.s, size, size_f, true, TextureWrap::ClampToEdge);
     const Int y = nearest_texel(f.t, size, size_f, true, TextureWrap::ClampToEdge);
-    const Int index = simd::gather(level_base_.data(), level, Mask(true)) + (f.face * size + y) * size + x;
+    const Int index = l.base + (f.face * size + y) * size + x;
     const Int t = simd::gather(rgba8_.data(), index, Mask(true));
     rb = red_blue(t);
     ga = green_alpha(t);
@@ -128,8 +142,9 @@ void SamplerCube::nearest_unorm8(const Face& f, Int level, Int& rb, Int& ga) con
 // One level's filter: NEAREST clamps to the face's edge (seamless filtering
 // ignores NEAREST); LINEAR takes taps across the edges (§5.5) and, when a
 // lane of the 8-lane vector has a corner, the weighted sum of §5.6.
-Vec4 SamplerCube::filter_level(const Face& f, Int level) const {
-    const Int size = simd::gather(level_size_.data(), level, Mask(true));
+Vec4 SamplerCube::filter_level(const Face& f, Int level_index) const {
+    const LevelLanes level = level_lanes(level_index);
+    const Int size = level.size;
     const Float size_f = simd::to_float(size);
     if (tex_->min_filter == TextureFilter::Nearest)
         return texel(level, f.face, nearest_texel(f.s, size, size_f, true, TextureWrap::ClampToEdge),

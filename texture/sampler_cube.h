@@ -42,7 +42,12 @@ private:
     Vec4 sample_at(const Face& f, const texel::LevelChoice& c) const;
     Vec4 filter_level(const Face& f, Int level) const;
     void nearest_unorm8(const Face& f, Int level, Int& rb, Int& ga) const;
-    Vec4 texel(Int level, Int face, Int x, Int y) const;
+    // A level's face size and first texel, per lane.
+    struct LevelLanes {
+        Int size, base;
+    };
+    LevelLanes level_lanes(Int level) const;
+    Vec4 texel(const LevelLanes& level, Int face, Int x, Int y) const;
 
     const Texture* tex_;
     int last_level_ = 0;
@@ -50,6 +55,9 @@ private:
     texel::LodState lod_;
     bool aos_ = false;  // RGBA8 NEAREST: llvmpipe's 8-bit path
     std::vector<int32_t> level_size_, level_base_;
+    // The same as lane tables for chains of at most 2 * kLanes levels
+    // (faces up to 32768 texels even with 8 lanes): permutes, not gathers.
+    Int size_table_[2] = {Int(0), Int(0)}, base_table_[2] = {Int(0), Int(0)};
     std::vector<int32_t> rgba8_;
     std::vector<float> rgba32_;
 };

@@ -200,7 +200,7 @@ ST_INLINE Float half_fast_log2(Float rho2) {
 // `read` (bits 1, 2, 4, 8 for R, G, B, A) says which float channels the
 // caller uses; the others are not fetched and read 0 (as LLVM drops the
 // loads of channels a shader never reads). RGBA8 texels come whole.
-inline constexpr unsigned kReadRGBA = 0xf, kReadRGB = 0x7;
+inline constexpr unsigned kReadRGBA = 0xf, kReadRGB = 0x7, kReadR = 0x1;
 ST_INLINE Vec4 gather_texels(bool rgba8, const int32_t* bytes, const float* floats, Int index, Mask active,
                              unsigned read = kReadRGBA) {
     if (rgba8) {
@@ -212,6 +212,22 @@ ST_INLINE Vec4 gather_texels(bool rgba8, const int32_t* bytes, const float* floa
         return (read >> c) & 1u ? simd::gather(floats + c, i, active) : Float(0.0f);
     };
     return Vec4(channel(0), channel(1), channel(2), channel(3));
+}
+
+// The channels of a float texel array that vary from texel to texel: R32F
+// stores (r, 0, 0, 1) (texel_formats.h), so only red need be fetched.
+ST_INLINE unsigned varying_channels(TextureFormat format) {
+    return format == TextureFormat::R32F ? kReadR : kReadRGBA;
+}
+// gather_texels of a float array with the channels varying_channels leaves
+// out set to the values every texel holds there, so filtering them gives
+// the same bits as filtering fetched ones.
+ST_INLINE Vec4 gather_format_texels(TextureFormat format, const int32_t* bytes, const float* floats, Int index,
+                                    Mask active) {
+    const unsigned read = varying_channels(format);
+    Vec4 t = gather_texels(format == TextureFormat::RGBA8, bytes, floats, index, active, read);
+    if (read == kReadR) t.w = Float(1.0f);
+    return t;
 }
 
 // The two trilinear blends (§2.8). Float: fmuladd(max(fpart, 0), C1 - C0, C0)
