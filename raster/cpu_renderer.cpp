@@ -63,6 +63,7 @@ int CpuRenderer::threads() const { return impl_->pool.size(); }
 void CpuRenderer::prepare(const Frame& frame) {
     impl_->frame = frame;
     impl_->passes.clear();
+    impl_->targets.clear();  // execute() allocates them for this frame's targets
     for (const Pass& pass : impl_->frame.passes) {
         if (pass.outputs.size() > size_t(kMaxFragmentOutputs - 1))
             throw std::runtime_error("a pass draws into at most " + std::to_string(kMaxFragmentOutputs) + " targets");
@@ -140,15 +141,15 @@ void CpuRenderer::Impl::run_vertex_stage(PreparedDraw& d, const Viewport& viewpo
 }
 
 // Copies the current texels of each render target a draw samples into its
-// texture and rebuilds the sampler (same size and levels, so the twin's
-// binding stays valid).
+// texture and its sampler (same size and levels, so the twin's binding
+// stays valid; nothing is allocated).
 void CpuRenderer::Impl::refresh_target_textures(std::vector<PreparedDraw>& draws) {
     for (PreparedDraw& d : draws)
         for (auto& tt : d.target_textures) {
             const auto& levels = targets.at(tt.texture.target);
             tt.texture.texels32 = levels[0];
             for (size_t l = 1; l < levels.size(); ++l) tt.texture.mips[l - 1].texels32 = levels[l];
-            *tt.sampler = Sampler2D(tt.texture);
+            tt.sampler->reload_texels();
         }
 }
 
@@ -157,12 +158,17 @@ void CpuRenderer::execute() {
     const FlushDenormals float_env;  // as llvmpipe's threads (float_env.h)
     const WorkerPool::Frame awake(m.pool);
     times_ = StageTimes{};
-    // Every target starts the frame at zero, as on the GL side.
-    m.targets.clear();
-    for (const RenderTarget& t : m.frame.targets)
-        for (int level = 0; level < t.levels; ++level)
-            m.targets[t.name].emplace_back(
-                size_t(std::max(1, t.width >> level)) * size_t(std::max(1, t.height >> level)) * 4, 0.0f);
+    // Every target starts the frame at zero, as on the GL side (the last
+    // frame's allocations are kept; prepare() drops them with the frame).
+    if (m.targets.empty()) {
+        for (const RenderTarget& t : m.frame.targets)
+            for (int level = 0; level < t.levels; ++level)
+                m.targets[t.name].emplace_back(
+                    size_t(std::max(1, t.width >> level)) * size_t(std::max(1, t.height >> level)) * 4, 0.0f);
+    } else {
+        for (auto& [name, levels] : m.targets)
+            for (std::vector<float>& level : levels) std::fill(level.begin(), level.end(), 0.0f);
+    }
     bool frame_started = false;  // a frame pass has drawn into m.result this frame
     for (size_t pi = 0; pi < m.frame.passes.size(); ++pi) {
         const Pass& pass = m.frame.passes[pi];

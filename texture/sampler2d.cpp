@@ -158,12 +158,20 @@ Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
         height_table_[l / kLanes].set(l % kLanes, level_height_[size_t(l)]);
         base_table_[l / kLanes].set(l % kLanes, level_base_[size_t(l)]);
     }
+    load_texels(texels);
+}
+
+// Copies the texture's texels into the sampler's arrays, sized for
+// `texels` texels of every level; arrays of that size already are reused
+// as they stand (their padding stays zero).
+void Sampler2D::load_texels(size_t texels) {
+    const Texture& texture = *tex_;
     auto level_bytes = [&](int l) { return l ? texture.mips[size_t(l - 1)].texels8.data() : texture.texels8.data(); };
     auto level_floats = [&](int l) {
         return l ? texture.mips[size_t(l - 1)].texels32.data() : texture.texels32.data();
     };
     if (texture.format == TextureFormat::RGBA8) {
-        rgba8_.assign(texels + kLanes, 0);
+        if (rgba8_.size() != texels + kLanes) rgba8_.assign(texels + kLanes, 0);
         for (int l = 0; l <= last_level_; ++l)
             std::memcpy(&rgba8_[size_t(level_base_[size_t(l)])], level_bytes(l),
                         size_t(level_width_[size_t(l)]) * size_t(level_height_[size_t(l)]) * 4);
@@ -172,7 +180,7 @@ Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
             build_alpha_quads();
     } else if (texture.format == TextureFormat::SRGB8_ALPHA8) {
         // llvmpipe decodes each texel and takes the float path from there.
-        rgba32_.assign((texels + 1) * 4, 0.0f);
+        if (rgba32_.size() != (texels + 1) * 4) rgba32_.assign((texels + 1) * 4, 0.0f);
         for (int l = 0; l <= last_level_; ++l) {
             const uint8_t* in = level_bytes(l);
             float* out = &rgba32_[size_t(level_base_[size_t(l)]) * 4];
@@ -180,14 +188,22 @@ Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
             for (size_t i = 0; i < n; ++i) out[i] = i % 4 == 3 ? srgb_texel_alpha(in[i]) : srgb_texel_colour(in[i]);
         }
     } else {
-        rgba32_.assign((texels + 1) * 4, 0.0f);  // + 1: the right tap of row_pair's last pair
+        // + 1: the right tap of row_pair's last pair
+        if (rgba32_.size() != (texels + 1) * 4) rgba32_.assign((texels + 1) * 4, 0.0f);
         for (int l = 0; l <= last_level_; ++l) {
             const float* in = level_floats(l);
             float* out = &rgba32_[size_t(level_base_[size_t(l)]) * 4];
             const size_t n = size_t(level_width_[size_t(l)]) * size_t(level_height_[size_t(l)]);
-            for (size_t i = 0; i < n; ++i) stored_texel(texture.format, in + 4 * i, out + 4 * i);
+            // RGBA32F stores texels as they are (render targets each frame).
+            if (texture.format == TextureFormat::RGBA32F) std::memcpy(out, in, n * 4 * sizeof(float));
+            else for (size_t i = 0; i < n; ++i) stored_texel(texture.format, in + 4 * i, out + 4 * i);
         }
     }
+}
+
+void Sampler2D::reload_texels() {
+    const size_t texels = size_t(level_base_.back()) + size_t(level_width_.back()) * size_t(level_height_.back());
+    load_texels(texels);
 }
 
 // The right (or lower) neighbour of texel i on an axis of n texels, as

@@ -68,6 +68,11 @@ public:
     glm::vec4 sample(const glm::vec2& st) const;
     glm::vec4 fetch(int x, int y) const;
 
+    // The texture's texels changed and nothing else did (a render target
+    // that a later pass samples, refreshed each frame): copies them in
+    // again, into the arrays the constructor made, without allocating.
+    void reload_texels();
+
     const Texture& texture() const { return *tex_; }
     int width() const { return tex_->width; }
     int height() const { return tex_->height; }
@@ -101,6 +106,7 @@ private:
     Vec4 texel(const LevelLanes& level, Int x, Int y, unsigned read = texel::kReadRGBA) const;
     void row_pair(const LevelLanes& level, const texel::LinearTaps& u, Int y, unsigned read, Vec4& left,
                   Vec4& right) const;
+    void load_texels(size_t texels);
     void build_alpha_quads();
     Int alpha_bilinear(const Vec2& st, const LevelLanes& level) const;
 

@@ -339,3 +339,58 @@ TEST(BilinearTaps, SameBitsAsTheGeneralFilter) {
 
 }  // namespace
 }  // namespace st
+
+namespace st {
+namespace {
+
+// A render target sampled by a later pass: its texels change each frame and
+// the sampler reloads them in place. The reloaded sampler gives what a
+// sampler made afresh from the new texels gives, alpha-only reads (the
+// footprint quads) included.
+TEST(ReloadTexels, SameAsANewSampler) {
+    for (TextureFormat format : {TextureFormat::RGBA8, TextureFormat::RGBA32F, TextureFormat::RGBA16F}) {
+        Texture t = ramp(format, TextureFilter::Linear, TextureWrap::Repeat, 32, 16);
+        t.mip_filter = MipFilter::Linear;
+        generate_box_mips(t, full_chain_levels(32, 16));
+        Sampler2D reloaded(t);
+        // New texels in every level, as a pass that drew them would leave.
+        auto change = [&](auto& texels, int seed) {
+            for (size_t i = 0; i < texels.size(); ++i)
+                texels[i] = decltype(+texels[i])((i * 37 + size_t(seed) * 11) % 251);
+        };
+        if (format == TextureFormat::RGBA8) {
+            change(t.texels8, 0);
+            for (size_t l = 0; l < t.mips.size(); ++l) change(t.mips[l].texels8, int(l) + 1);
+        } else {
+            change(t.texels32, 0);
+            for (size_t l = 0; l < t.mips.size(); ++l) change(t.mips[l].texels32, int(l) + 1);
+            for (float& v : t.texels32) v /= 251.0f;
+            for (auto& m : t.mips) for (float& v : m.texels32) v /= 251.0f;
+        }
+        reloaded.reload_texels();
+        const Sampler2D fresh(t);
+        std::mt19937 rng(11);
+        std::uniform_real_distribution<float> coord(-1.0f, 2.0f), grad(-0.3f, 0.3f);
+        for (int round = 0; round < 100; ++round) {
+            Vec2 st, dx, dy;
+            for (int lane = 0; lane < kLanes; ++lane) {
+                st.x.set(lane, coord(rng)), st.y.set(lane, coord(rng));
+                dx.x.set(lane, grad(rng)), dx.y.set(lane, grad(rng));
+                dy.x.set(lane, grad(rng)), dy.y.set(lane, grad(rng));
+            }
+            const Vec4 a = reloaded.sample_grad(st, dx, dy), b = fresh.sample_grad(st, dx, dy);
+            const Float alpha_a = reloaded.sample_grad_alpha(st, reloaded.grad_levels(dx, dy));
+            const Float alpha_b = fresh.sample_grad_alpha(st, fresh.grad_levels(dx, dy));
+            for (int lane = 0; lane < kLanes; ++lane) {
+                ASSERT_EQ(bits_of(a.x[lane]), bits_of(b.x[lane])) << int(format) << " " << round;
+                ASSERT_EQ(bits_of(a.y[lane]), bits_of(b.y[lane]));
+                ASSERT_EQ(bits_of(a.z[lane]), bits_of(b.z[lane]));
+                ASSERT_EQ(bits_of(a.w[lane]), bits_of(b.w[lane]));
+                ASSERT_EQ(bits_of(alpha_a[lane]), bits_of(alpha_b[lane]));
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace st
