@@ -34,6 +34,13 @@ Texture ramp(TextureFormat format, TextureFilter filter, TextureWrap wrap, int w
     return t;
 }
 
+// A Vec2 of random values, lane by lane.
+Vec2 random_lanes(std::mt19937& rng, std::uniform_real_distribution<float>& dist) {
+    Vec2 v;
+    for (int lane = 0; lane < kLanes; ++lane) v.x.set(lane, dist(rng)), v.y.set(lane, dist(rng));
+    return v;
+}
+
 glm::vec2 centre(int x, int y, const Texture& t) {
     return {(float(x) + 0.5f) / float(t.width), (float(y) + 0.5f) / float(t.height)};
 }
@@ -247,12 +254,7 @@ TEST(SampleGrad, HoistedLevelsAndAlphaOnlyAreTheSameBits) {
             std::mt19937 rng(7);
             std::uniform_real_distribution<float> coord(-2.0f, 3.0f), grad(-0.2f, 0.2f);
             for (int round = 0; round < 200; ++round) {
-                Vec2 st, dx, dy;
-                for (int lane = 0; lane < kLanes; ++lane) {
-                    st.x.set(lane, coord(rng)), st.y.set(lane, coord(rng));
-                    dx.x.set(lane, grad(rng)), dx.y.set(lane, grad(rng));
-                    dy.x.set(lane, grad(rng)), dy.y.set(lane, grad(rng));
-                }
+                const Vec2 st = random_lanes(rng, coord), dx = random_lanes(rng, grad), dy = random_lanes(rng, grad);
                 const Vec4 direct = s.sample_grad(st, dx, dy);
                 const texel::LevelChoice levels = s.grad_levels(dx, dy);
                 const Vec4 hoisted = s.sample_grad(st, levels);
@@ -372,12 +374,7 @@ TEST(ReloadTexels, SameAsANewSampler) {
         std::mt19937 rng(11);
         std::uniform_real_distribution<float> coord(-1.0f, 2.0f), grad(-0.3f, 0.3f);
         for (int round = 0; round < 100; ++round) {
-            Vec2 st, dx, dy;
-            for (int lane = 0; lane < kLanes; ++lane) {
-                st.x.set(lane, coord(rng)), st.y.set(lane, coord(rng));
-                dx.x.set(lane, grad(rng)), dx.y.set(lane, grad(rng));
-                dy.x.set(lane, grad(rng)), dy.y.set(lane, grad(rng));
-            }
+            const Vec2 st = random_lanes(rng, coord), dx = random_lanes(rng, grad), dy = random_lanes(rng, grad);
             const Vec4 a = reloaded.sample_grad(st, dx, dy), b = fresh.sample_grad(st, dx, dy);
             const Float alpha_a = reloaded.sample_grad_alpha(st, reloaded.grad_levels(dx, dy));
             const Float alpha_b = fresh.sample_grad_alpha(st, fresh.grad_levels(dx, dy));

@@ -1,8 +1,8 @@
 // sampler_rates.cpp: see sampler_rates.h.
 #include "app/commands/sampler_rates.h"
 
+#include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <iostream>
 
 #include "app/backends.h"
@@ -10,6 +10,7 @@
 #include "app/json_text.h"
 #include "app/progress.h"
 #include "app/tool_data.h"
+#include "image/compare.h"
 #include "scene/scene.h"
 
 namespace st {
@@ -62,13 +63,12 @@ nlohmann::json corner_triangle(bool cube, const int (&corners)[3][2]) {
     return t;
 }
 
-// Pixels whose float bits differ between the two backends' images: a rate
-// counts only for reads that are llvmpipe's to the bit.
+// Pixels whose float bits differ between the two backends' images (compare's
+// identical_fraction_float): a rate counts only for reads that are
+// llvmpipe's to the bit.
 long differing_pixels(const Image& a, const Image& b) {
-    if (a.width != b.width || a.height != b.height) return long(a.width) * a.height;
-    long n = 0;
-    for (size_t p = 0; p < a.rgba.size(); p += 4) n += std::memcmp(&a.rgba[p], &b.rgba[p], 4 * sizeof(float)) != 0;
-    return n;
+    const double pixels = double(a.width) * double(a.height);
+    return long(std::llround((1.0 - compare_images(a, b).identical_fraction_float) * pixels));
 }
 
 }  // namespace
