@@ -381,11 +381,24 @@ ST_INLINE Mask isnan(Float x) { return x != x; }
 // float -> int32 truncating toward zero, with the x86 answer for what C++
 // leaves undefined: NaN and values outside [-2^31, 2^31) give INT32_MIN
 // (cvttps2dq, which is what llvmpipe's fptosi compiles to).
+// The instruction itself where there is one, in inline assembly: GCC 12
+// folds _mm256_cvttps_epi32 of a constant as C's conversion, saturating
+// (3e9 gave INT32_MAX at -O2, the instruction INT32_MIN).
 ST_INLINE Int itrunc(Float x) {
+#if defined(ST_SIMD_AVX512)
+    __m512i r;
+    __asm__("vcvttps2dq %1, %0" : "=v"(r) : "v"(__m512(x.v)));
+    return Int(IntV(r));
+#elif defined(ST_SIMD_AVX2)
+    __m256i r;
+    __asm__("vcvttps2dq %1, %0" : "=x"(r) : "x"(__m256(x.v)));
+    return Int(IntV(r));
+#else
     const Mask in_range = (x >= Float(-2147483648.0f)) && (x < Float(2147483648.0f));
     const Float safe = select(in_range, x, Float(0.0f));
     const Int r(__builtin_convertvector(safe.v, IntV));
     return select(in_range, r, Int(INT32_MIN));
+#endif
 }
 
 // float -> int32 rounding to nearest, ties to even (cvtps2dq, llvmpipe's
