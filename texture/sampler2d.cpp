@@ -361,9 +361,8 @@ ST_INLINE Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, 
 // replace the gathers.
 // Its helpers and lambdas are forced inline: out of line, their vectors go
 // through memory, which cost 40 % of the unscaled RGBA8 rate (microbench).
-template <bool kRedBlue>
-ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, Int& rb,
-                              Int& ga) const {
+ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0,
+                                        unsigned read, Int& rb, Int& ga) const {
     const int32_t* texels = rgba8_.data();
     if (filter == TextureFilter::Nearest) {
         const Int x = nearest_texel(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s);
@@ -414,53 +413,54 @@ ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level,
         const Int top = lerp8_pairs(wu, half_bytes(t01), half_bytes(t11));
         return lerp8_pairs(wv, bottom, top);
     };
-    if constexpr (kRedBlue) rb = pairs(0);
-    else rb = Int(0);
-    ga = pairs(8);
+    // A pair no channel of `read` is in is not filtered (0).
+    rb = read & kReadRedBlue ? pairs(0) : Int(0);
+    ga = read & kReadGreenAlpha ? pairs(8) : Int(0);
 }
 
 // min == mag: the one filter at the chosen levels.
-Vec4 Sampler2D::filter_levels(const Vec2& st, const LevelChoice& c, TextureFilter filter, bool aos) const {
+Vec4 Sampler2D::filter_levels(const Vec2& st, const LevelChoice& c, TextureFilter filter, bool aos,
+                               unsigned read) const {
     const LevelLanes l0 = level_lanes(c.level0);
     if (aos) {
         Int rb0, ga0;
-        filter_unorm8(st, l0, filter, false, rb0, ga0);
+        filter_unorm8(st, l0, filter, false, read, rb0, ga0);
         const Int wl = level_weight8(c.fpart);
         if (c.two_levels && simd::any(wl != Int(0))) {
             Int rb1, ga1;
-            filter_unorm8(st, level_lanes(c.level1), filter, false, rb1, ga1);
-            blend_levels8(wl, rb0, ga0, rb1, ga1);
+            filter_unorm8(st, level_lanes(c.level1), filter, false, read, rb1, ga1);
+            blend_levels8(wl, rb0, ga0, rb1, ga1, read);
         }
-        return unpack_pairs(rb0, ga0);
+        return unpack_pairs(rb0, ga0, read);
     }
-    const Vec4 c0 = filter_float(st, l0, filter, Mask(false));
+    const Vec4 c0 = filter_float(st, l0, filter, Mask(false), read);
     if (!c.two_levels) return c0;
     // The second level only where some lane of the 8-lane vector has a
     // weight (unordered: NaN counts); elsewhere C0 as it is (§2.8).
-    return blend_second_level(st, c, filter, Mask(false), any_in_group(!(c.fpart <= Float(0.0f))), c0);
+    return blend_second_level(st, c, filter, Mask(false), any_in_group(!(c.fpart <= Float(0.0f))), c0, read);
 }
 
 // C0 blended with level1's result in the lanes of `blend`:
 // fmuladd(max(fpart, 0), C1 - C0, C0).
 Vec4 Sampler2D::blend_second_level(const Vec2& st, const LevelChoice& c, TextureFilter filter, Mask as_nearest,
-                                   Mask blend, const Vec4& c0) const {
+                                   Mask blend, const Vec4& c0, unsigned read) const {
     if (none(blend)) return c0;
-    return blend_levels(c.fpart, c0, filter_float(st, level_lanes(c.level1), filter, as_nearest), blend);
+    return blend_levels(c.fpart, c0, filter_float(st, level_lanes(c.level1), filter, as_nearest, read), blend);
 }
 
-Vec4 Sampler2D::sample_levels(const Vec2& st, const LevelChoice& c, bool per_quad_lod) const {
+Vec4 Sampler2D::sample_levels(const Vec2& st, const LevelChoice& c, bool per_quad_lod, unsigned read) const {
     const TextureFilter min = tex_->min_filter, mag = tex_->mag_filter;
     // RGBA8 stays on the 8-bit path unless min != mag with a LOD per lane (§1.2).
     const bool aos = aos_ && (min == mag || per_quad_lod);
-    if (min == mag) return filter_levels(st, c, min, aos);
+    if (min == mag) return filter_levels(st, c, min, aos, read);
     if (aos) {
         // Per quad: minified quads take the min filter at their levels, the
         // others the mag filter at the base, without mip filtering.
         LevelChoice base;
         base.level0 = base.level1 = Int(0);
         base.fpart = Float(0.0f);
-        const Vec4 minified = filter_levels(st, c, min, true);
-        const Vec4 magnified = filter_levels(st, base, mag, true);
+        const Vec4 minified = filter_levels(st, c, min, true, read);
+        const Vec4 magnified = filter_levels(st, base, mag, true, read);
         return select(c.minified, minified, magnified);
     }
     // SoA decides per 8-lane vector: with no lane needing LINEAR, true
@@ -472,17 +472,17 @@ Vec4 Sampler2D::sample_levels(const Vec2& st, const LevelChoice& c, bool per_qua
     Vec4 nearest(Float(0.0f)), linear(Float(0.0f));
     if (!all(linear_vectors)) {
         if (min == TextureFilter::Nearest) {
-            nearest = filter_levels(st, c, TextureFilter::Nearest, false);
+            nearest = filter_levels(st, c, TextureFilter::Nearest, false, read);
         } else {
-            nearest = filter_float(st, level_lanes(Int(0)), TextureFilter::Nearest, Mask(false));
+            nearest = filter_float(st, level_lanes(Int(0)), TextureFilter::Nearest, Mask(false), read);
         }
     }
     if (any(linear_vectors)) {
         const Mask as_nearest = !needs_linear;
-        linear = filter_float(st, level_lanes(c.level0), TextureFilter::Linear, as_nearest);
+        linear = filter_float(st, level_lanes(c.level0), TextureFilter::Linear, as_nearest, read);
         if (c.two_levels)
             linear = blend_second_level(st, c, TextureFilter::Linear, as_nearest,
-                                        linear_vectors && any_in_group(c.minified), linear);
+                                        linear_vectors && any_in_group(c.minified), linear, read);
     }
     return select(linear_vectors, linear, nearest);
 }
@@ -496,8 +496,8 @@ ST_INLINE Vec4 Sampler2D::sample_base(const Vec2& st, unsigned read) const {
     const LevelLanes l0 = level_lanes(Int(0));
     if (!aos_) return filter_float(st, l0, tex_->mag_filter, Mask(false), read);
     Int rb, ga;
-    filter_unorm8(st, l0, tex_->mag_filter, true, rb, ga);
-    return unpack_pairs(rb, ga);
+    filter_unorm8(st, l0, tex_->mag_filter, true, read, rb, ga);
+    return unpack_pairs(rb, ga, read);
 }
 
 // rho^2 per quad from its top-left lane's differences, at the base level's
@@ -512,9 +512,9 @@ Float Sampler2D::quad_rho2(const Vec2& st) const {
     return maxps(a + c, b + d);
 }
 
-Vec4 Sampler2D::sample(const Vec2& st) const {
-    if (!needs_lod()) return sample_base(st);
-    return sample_levels(st, choose_from_rho2(quad_rho2(st), mip_filter_, last_level_, lod_), true);
+Vec4 Sampler2D::sample(const Vec2& st, unsigned read) const {
+    if (!needs_lod()) return sample_base(st, read);
+    return sample_levels(st, choose_from_rho2(quad_rho2(st), mip_filter_, last_level_, lod_), true, read);
 }
 
 Vec4 Sampler2D::sample_bias(const Vec2& st, Float bias) const {
@@ -525,7 +525,7 @@ Vec4 Sampler2D::sample_bias(const Vec2& st, Float bias) const {
 
 Vec4 Sampler2D::sample_lod_levels(const Vec2& st, Float lod, unsigned read) const {
     if (!needs_lod()) return sample_base(st, read);
-    return sample_levels(st, choose_levels(lod_.requested(lod), mip_filter_, last_level_), false);
+    return sample_levels(st, choose_levels(lod_.requested(lod), mip_filter_, last_level_), false, read);
 }
 
 texel::LevelChoice Sampler2D::grad_levels(const Vec2& dx, const Vec2& dy) const {

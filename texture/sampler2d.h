@@ -25,14 +25,16 @@ public:
 
     // GLSL texture(sampler2D, vec2): in a fragment twin the LOD comes from
     // each 2x2 quad of lanes (its top-left, top-right and bottom-left
-    // lanes, as llvmpipe takes it), so call it on whole quads.
-    Vec4 sample(const Vec2& st) const;
+    // lanes, as llvmpipe takes it), so call it on whole quads. `read` as
+    // for sample_lod: the channels the shader uses (texel::kReadR for .r);
+    // the others read anything, and filtering may skip them.
+    Vec4 sample(const Vec2& st, unsigned read = texel::kReadRGBA) const;
     // GLSL texture(sampler2D, vec2, float bias): the quad's LOD plus each
     // lane's bias.
     Vec4 sample_bias(const Vec2& st, Float bias) const;
     // GLSL textureLod(sampler2D, vec2, float): one LOD per lane. `read`
-    // (texel::kReadRGB for .rgb) names the channels used; a float texture
-    // without mip selection may then skip the others (they read anything).
+    // (texel::kReadRGB for .rgb) names the channels used; the sampler may
+    // then skip the others (they read anything).
     ST_INLINE Vec4 sample_lod(const Vec2& st, Float lod, unsigned read = texel::kReadRGBA) const {
         if (clamped_bilinear_) return sample_lod(bilinear_taps(st), read);
         return sample_lod_levels(st, lod, read);
@@ -93,15 +95,15 @@ private:
     bool needs_lod() const;
     Vec4 sample_base(const Vec2& st, unsigned read = texel::kReadRGBA) const;
     Float quad_rho2(const Vec2& st) const;
-    Vec4 sample_levels(const Vec2& st, const LevelChoice& choice, bool per_quad_lod) const;
-    Vec4 filter_levels(const Vec2& st, const LevelChoice& choice, TextureFilter filter, bool aos) const;
+    Vec4 sample_levels(const Vec2& st, const LevelChoice& choice, bool per_quad_lod,
+                       unsigned read = texel::kReadRGBA) const;
+    Vec4 filter_levels(const Vec2& st, const LevelChoice& choice, TextureFilter filter, bool aos, unsigned read) const;
     Vec4 blend_second_level(const Vec2& st, const LevelChoice& choice, TextureFilter filter, Mask as_nearest,
-                            Mask blend, const Vec4& c0) const;
+                            Mask blend, const Vec4& c0, unsigned read) const;
     Vec4 filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter, Mask as_nearest,
                       unsigned read = texel::kReadRGBA) const;
     Int texture_size(Int lod, bool x) const;
-    template <bool kRedBlue = true>
-    void filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, Int& rb,
+    void filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, unsigned read, Int& rb,
                        Int& ga) const;
     Vec4 texel(const LevelLanes& level, Int x, Int y, unsigned read = texel::kReadRGBA) const;
     void row_pair(const LevelLanes& level, const texel::LinearTaps& u, Int y, unsigned read, Vec4& left,

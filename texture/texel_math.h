@@ -155,14 +155,22 @@ ST_INLINE Int nearest_texel(Float s, Int size, Float size_f, bool pot, TextureWr
 // unorm8 to float: k * fl(1/255), one rounding (lp_bld_conv.c).
 ST_INLINE Float unorm8_to_float(Int k) { return simd::to_float(k) * Float(1.0f / 255.0f); }
 
+// The channels a caller reads (bits 1, 2, 4, 8 for R, G, B, A), and the
+// two byte pairs of the 8-bit path they fall in.
+inline constexpr unsigned kReadRGBA = 0xf, kReadRGB = 0x7, kReadR = 0x1;
+inline constexpr unsigned kReadRedBlue = 0x5, kReadGreenAlpha = 0xa;
+
 // The R and B bytes (rb) or G and A bytes (ga) of packed RGBA8 texels, one
 // per 16-bit half.
 ST_INLINE Int red_blue(Int t) { return t & Int(0x00ff00ff); }
 ST_INLINE Int green_alpha(Int t) { return simd::odd_bytes(t); }
 
-ST_INLINE Vec4 unpack_pairs(Int rb, Int ga) {
-    return Vec4(unorm8_to_float(rb & Int(0xff)), unorm8_to_float(ga & Int(0xff)), unorm8_to_float(rb >> 16),
-                unorm8_to_float(ga >> 16));
+// The pairs as floats; channels outside `read` are 0, not converted.
+ST_INLINE Vec4 unpack_pairs(Int rb, Int ga, unsigned read = kReadRGBA) {
+    auto channel = [&](unsigned c, Int bytes) __attribute__((always_inline)) {
+        return (read >> c) & 1u ? unorm8_to_float(bytes) : Float(0.0f);
+    };
+    return Vec4(channel(0, rb & Int(0xff)), channel(1, ga & Int(0xff)), channel(2, rb >> 16), channel(3, ga >> 16));
 }
 
 // Lane indices of the top-left, top-right and bottom-left lane of each
@@ -200,7 +208,6 @@ ST_INLINE Float half_fast_log2(Float rho2) {
 // `read` (bits 1, 2, 4, 8 for R, G, B, A) says which float channels the
 // caller uses; the others are not fetched and read 0 (as LLVM drops the
 // loads of channels a shader never reads). RGBA8 texels come whole.
-inline constexpr unsigned kReadRGBA = 0xf, kReadRGB = 0x7, kReadR = 0x1;
 ST_INLINE Vec4 gather_texels(bool rgba8, const int32_t* bytes, const float* floats, Int index, Mask active,
                              unsigned read = kReadRGBA) {
     if (rgba8) {
@@ -243,10 +250,10 @@ ST_INLINE Vec4 blend_levels(Float fpart, const Vec4& c0, const Vec4& c1, Mask bl
 // lane, lerp8 gives level0's bytes as they are: level1 need not be filtered
 // (magnified quads, LODs at the last level, fractions under 1/256).
 ST_INLINE Int level_weight8(Float fpart) { return itrunc(fpart * Float(256.0f)); }
-ST_INLINE void blend_levels8(Int wl, Int& rb0, Int& ga0, Int rb1, Int ga1) {
+ST_INLINE void blend_levels8(Int wl, Int& rb0, Int& ga0, Int rb1, Int ga1, unsigned read = kReadRGBA) {
     const Int w = lerp8_weight(wl);
-    rb0 = lerp8_pairs(w, rb0, rb1);
-    ga0 = lerp8_pairs(w, ga0, ga1);
+    if (read & kReadRedBlue) rb0 = lerp8_pairs(w, rb0, rb1);
+    if (read & kReadGreenAlpha) ga0 = lerp8_pairs(w, ga0, ga1);
 }
 
 }  // namespace st::texel

@@ -5,7 +5,6 @@
 #include "kernels/conformance/conformance.h"
 
 #include "shading/glsl_math.h"
-#include "shading/glsl_texture.h"
 #include "texture/sampler2d.h"
 
 namespace st {
@@ -34,21 +33,23 @@ Vec4 ParallaxLoopFragment::main(const Fragment& frag) const {
 
     Vec2 uv = frag.varying(v_uv).xy();
     Float depth = 0.0f;
-    Float map_depth = texture(*depth_map_, uv).x;
+    // texture(depth_map, uv).r: the sampler filters red alone (kReadR), as
+    // the compiler drops the channels a shader never reads.
+    Float map_depth = depth_map_->sample(uv, texel::kReadR).x;
     exec.loop([&](Loop& loop) {
         loop.break_if(!(depth < map_depth));
         exec.assign(uv, uv - step_uv);
-        exec.assign(map_depth, texture(*depth_map_, uv).x);
+        exec.assign(map_depth, depth_map_->sample(uv, texel::kReadR).x);
         exec.assign(depth, depth + layer_depth);
     });
     // The crossing between the last two layers.
     const Vec2 before_uv = uv + step_uv;
     const Float after = map_depth - depth;
-    const Float before = texture(*depth_map_, before_uv).x - depth + layer_depth;
+    const Float before = depth_map_->sample(before_uv, texel::kReadR).x - depth + layer_depth;
     const Float w = after / (after - before);
     uv = before_uv * w + uv * (1.0f - w);
 
-    const Vec3 albedo = texture(*colour_map_, uv).xyz();
+    const Vec3 albedo = colour_map_->sample(uv, texel::kReadRGB).xyz();
     const Float lambert = max(Float(light_dir_.z), Float(0.0f));
     return Vec4(albedo * (0.15f + lambert), 1.0f);
 }
