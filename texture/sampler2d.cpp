@@ -361,19 +361,30 @@ ST_INLINE Vec4 Sampler2D::filter_float(const Vec2& st, const LevelLanes& level, 
 // replace the gathers.
 // Its helpers and lambdas are forced inline: out of line, their vectors go
 // through memory, which cost 40 % of the unscaled RGBA8 rate (microbench).
-ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0,
-                                        unsigned read, Int& rb, Int& ga) const {
+ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& lanes_level, TextureFilter filter,
+                                        bool level0, unsigned read, Mask active, Int& rb, Int& ga) const {
     const int32_t* texels = rgba8_.data();
     if (filter == TextureFilter::Nearest) {
+        const LevelLanes& level = lanes_level;
         const Int x = nearest_texel(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s);
         const Int y = nearest_texel(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t);
-        const Int t = simd::gather(texels, level.base + y * level.width + x, Mask(true));
+        const Int t = simd::gather(texels, level.base + y * level.width + x, active);
         rb = red_blue(t);
         ga = green_alpha(t);
         return;
     }
-    const LinearTaps8 u = linear_taps_fixed(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s);
-    const LinearTaps8 v = linear_taps_fixed(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t);
+    LevelLanes level = lanes_level;
+    LinearTaps8 u = linear_taps_fixed(st.x, level.width, level.width_f, pot_w_, tex_->wrap_s);
+    LinearTaps8 v = linear_taps_fixed(st.y, level.height, level.height_f, pot_h_, tex_->wrap_t);
+    // Lanes outside `active` (their results are not used) read where a
+    // lead lane reads, level and taps, so that they neither break a texel
+    // window nor take a gather of their own; their weights stay theirs.
+    if (!all(active)) {
+        const Int lead = lead_lanes(active);
+        auto follow = [&](Int x) __attribute__((always_inline)) { return select(active, x, simd::permute(x, lead)); };
+        u.i0 = follow(u.i0), u.i1 = follow(u.i1), v.i0 = follow(v.i0), v.i1 = follow(v.i1);
+        level.base = follow(level.base), level.width = follow(level.width), level.height = follow(level.height);
+    }
     // Each row's two taps are neighbours but where the wrap or the clamp
     // joins them otherwise; those lanes are fetched again.
     Int t00, t10, t01, t11;
@@ -419,16 +430,18 @@ ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& level,
 }
 
 // min == mag: the one filter at the chosen levels.
-Vec4 Sampler2D::filter_levels(const Vec2& st, const LevelChoice& c, TextureFilter filter, bool aos,
-                               unsigned read) const {
+Vec4 Sampler2D::filter_levels(const Vec2& st, const LevelChoice& c, TextureFilter filter, bool aos, unsigned read,
+                               Mask active) const {
     const LevelLanes l0 = level_lanes(c.level0);
     if (aos) {
         Int rb0, ga0;
-        filter_unorm8(st, l0, filter, false, read, rb0, ga0);
+        filter_unorm8(st, l0, filter, false, read, active, rb0, ga0);
         const Int wl = level_weight8(c.fpart);
-        if (c.two_levels && simd::any(wl != Int(0))) {
+        // Each lane is its own here: the second level only where an
+        // active lane weighs it.
+        if (c.two_levels && simd::any(active && wl != Int(0))) {
             Int rb1, ga1;
-            filter_unorm8(st, level_lanes(c.level1), filter, false, read, rb1, ga1);
+            filter_unorm8(st, level_lanes(c.level1), filter, false, read, active, rb1, ga1);
             blend_levels8(wl, rb0, ga0, rb1, ga1, read);
         }
         return unpack_pairs(rb0, ga0, read);
@@ -448,19 +461,20 @@ Vec4 Sampler2D::blend_second_level(const Vec2& st, const LevelChoice& c, Texture
     return blend_levels(c.fpart, c0, filter_float(st, level_lanes(c.level1), filter, as_nearest, read), blend);
 }
 
-Vec4 Sampler2D::sample_levels(const Vec2& st, const LevelChoice& c, bool per_quad_lod, unsigned read) const {
+Vec4 Sampler2D::sample_levels(const Vec2& st, const LevelChoice& c, bool per_quad_lod, unsigned read,
+                              Mask active) const {
     const TextureFilter min = tex_->min_filter, mag = tex_->mag_filter;
     // RGBA8 stays on the 8-bit path unless min != mag with a LOD per lane (§1.2).
     const bool aos = aos_ && (min == mag || per_quad_lod);
-    if (min == mag) return filter_levels(st, c, min, aos, read);
+    if (min == mag) return filter_levels(st, c, min, aos, read, active);
     if (aos) {
         // Per quad: minified quads take the min filter at their levels, the
         // others the mag filter at the base, without mip filtering.
         LevelChoice base;
         base.level0 = base.level1 = Int(0);
         base.fpart = Float(0.0f);
-        const Vec4 minified = filter_levels(st, c, min, true, read);
-        const Vec4 magnified = filter_levels(st, base, mag, true, read);
+        const Vec4 minified = filter_levels(st, c, min, true, read, active);
+        const Vec4 magnified = filter_levels(st, base, mag, true, read, active);
         return select(c.minified, minified, magnified);
     }
     // SoA decides per 8-lane vector: with no lane needing LINEAR, true
@@ -472,7 +486,7 @@ Vec4 Sampler2D::sample_levels(const Vec2& st, const LevelChoice& c, bool per_qua
     Vec4 nearest(Float(0.0f)), linear(Float(0.0f));
     if (!all(linear_vectors)) {
         if (min == TextureFilter::Nearest) {
-            nearest = filter_levels(st, c, TextureFilter::Nearest, false, read);
+            nearest = filter_levels(st, c, TextureFilter::Nearest, false, read, Mask(true));
         } else {
             nearest = filter_float(st, level_lanes(Int(0)), TextureFilter::Nearest, Mask(false), read);
         }
@@ -492,11 +506,11 @@ ST_INLINE bool Sampler2D::needs_lod() const {
 }
 
 // One level, one filter: no LOD at all, whatever the op (§1.1).
-ST_INLINE Vec4 Sampler2D::sample_base(const Vec2& st, unsigned read) const {
+ST_INLINE Vec4 Sampler2D::sample_base(const Vec2& st, unsigned read, Mask active) const {
     const LevelLanes l0 = level_lanes(Int(0));
     if (!aos_) return filter_float(st, l0, tex_->mag_filter, Mask(false), read);
     Int rb, ga;
-    filter_unorm8(st, l0, tex_->mag_filter, true, read, rb, ga);
+    filter_unorm8(st, l0, tex_->mag_filter, true, read, active, rb, ga);
     return unpack_pairs(rb, ga, read);
 }
 
@@ -512,9 +526,12 @@ Float Sampler2D::quad_rho2(const Vec2& st) const {
     return maxps(a + c, b + d);
 }
 
-Vec4 Sampler2D::sample(const Vec2& st, unsigned read) const {
-    if (!needs_lod()) return sample_base(st, read);
-    return sample_levels(st, choose_from_rho2(quad_rho2(st), mip_filter_, last_level_, lod_), true, read);
+Vec4 Sampler2D::sample(const Vec2& st, unsigned read, Mask active) const {
+    // No lane uses the result (a loop's last pass, after its last lane
+    // left): nothing to read.
+    if (none(active)) return Vec4(Float(0.0f));
+    if (!needs_lod()) return sample_base(st, read, active);
+    return sample_levels(st, choose_from_rho2(quad_rho2(st), mip_filter_, last_level_, lod_), true, read, active);
 }
 
 Vec4 Sampler2D::sample_bias(const Vec2& st, Float bias) const {

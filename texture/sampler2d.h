@@ -27,8 +27,12 @@ public:
     // each 2x2 quad of lanes (its top-left, top-right and bottom-left
     // lanes, as llvmpipe takes it), so call it on whole quads. `read` as
     // for sample_lod: the channels the shader uses (texel::kReadR for .r);
-    // the others read anything, and filtering may skip them.
-    Vec4 sample(const Vec2& st, unsigned read = texel::kReadRGBA) const;
+    // the others read anything, and filtering may skip them. `active`: the
+    // lanes whose result is used (exec.active() for a value stored with
+    // exec.assign); the others still give the quad's LOD their coordinates
+    // but read anything, so their work may be skipped where that keeps
+    // every active lane's bits.
+    Vec4 sample(const Vec2& st, unsigned read = texel::kReadRGBA, Mask active = Mask(true)) const;
     // GLSL texture(sampler2D, vec2, float bias): the quad's LOD plus each
     // lane's bias.
     Vec4 sample_bias(const Vec2& st, Float bias) const;
@@ -93,18 +97,19 @@ private:
 
     LevelLanes level_lanes(Int level) const;
     bool needs_lod() const;
-    Vec4 sample_base(const Vec2& st, unsigned read = texel::kReadRGBA) const;
+    Vec4 sample_base(const Vec2& st, unsigned read = texel::kReadRGBA, Mask active = Mask(true)) const;
     Float quad_rho2(const Vec2& st) const;
     Vec4 sample_levels(const Vec2& st, const LevelChoice& choice, bool per_quad_lod,
-                       unsigned read = texel::kReadRGBA) const;
-    Vec4 filter_levels(const Vec2& st, const LevelChoice& choice, TextureFilter filter, bool aos, unsigned read) const;
+                       unsigned read = texel::kReadRGBA, Mask active = Mask(true)) const;
+    Vec4 filter_levels(const Vec2& st, const LevelChoice& choice, TextureFilter filter, bool aos, unsigned read,
+                       Mask active) const;
     Vec4 blend_second_level(const Vec2& st, const LevelChoice& choice, TextureFilter filter, Mask as_nearest,
                             Mask blend, const Vec4& c0, unsigned read) const;
     Vec4 filter_float(const Vec2& st, const LevelLanes& level, TextureFilter filter, Mask as_nearest,
                       unsigned read = texel::kReadRGBA) const;
     Int texture_size(Int lod, bool x) const;
-    void filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, unsigned read, Int& rb,
-                       Int& ga) const;
+    void filter_unorm8(const Vec2& st, const LevelLanes& level, TextureFilter filter, bool level0, unsigned read,
+                       Mask active, Int& rb, Int& ga) const;
     Vec4 texel(const LevelLanes& level, Int x, Int y, unsigned read = texel::kReadRGBA) const;
     void row_pair(const LevelLanes& level, const texel::LinearTaps& u, Int y, unsigned read, Vec4& left,
                   Vec4& right) const;

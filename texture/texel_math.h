@@ -194,6 +194,18 @@ ST_INLINE Mask any_in_group(Mask m) {
     return Mask::from_bits(out);
 }
 
+// For each lane, a lane whose reads it may share when its own result is
+// not used: the first lane of its 8-lane group in `active`, or, in a group
+// without one, the first of all (the caller has at least one).
+ST_INLINE Int lead_lanes(Mask active) {
+    const unsigned b = bits(active);
+    Int lead(__builtin_ctz(b));
+    for (int g = 0; g < kLanes / 8; ++g)
+        if (const unsigned own = b >> (8 * g) & 0xffu)
+            lead = select(Mask::from_bits(0xffu << (8 * g)), Int(8 * g + __builtin_ctz(own)), lead);
+    return lead;
+}
+
 // 0.5 * fast_log2(rho^2): (E - 128) + the mantissa in [1, 2), one rounded
 // add, then halved (§2.4).
 ST_INLINE Float half_fast_log2(Float rho2) {

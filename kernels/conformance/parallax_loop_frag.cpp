@@ -39,7 +39,8 @@ Vec4 ParallaxLoopFragment::main(const Fragment& frag) const {
     exec.loop([&](Loop& loop) {
         loop.break_if(!(depth < map_depth));
         exec.assign(uv, uv - step_uv);
-        exec.assign(map_depth, depth_map_->sample(uv, texel::kReadR).x);
+        // Only the lanes still in the loop use the read (exec.active()).
+        exec.assign(map_depth, depth_map_->sample(uv, texel::kReadR, exec.active()).x);
         exec.assign(depth, depth + layer_depth);
     });
     // The crossing between the last two layers.
