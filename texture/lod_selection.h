@@ -22,6 +22,15 @@ struct LevelChoice {
     bool two_levels = false;
 };
 
+// What the levels of an implicit LOD depend on besides the coordinate:
+// two textures alike in all of it choose the same levels at one point.
+struct LodShape {
+    int width = 0, height = 0, last_level = 0;
+    MipFilter mip_filter = MipFilter::None;
+    LodState state;
+    bool operator==(const LodShape&) const = default;
+};
+
 // The LOD selector (§2.4) and level selection (§2.6) for min == mag, GL's
 // default sampler state (no bias, MIN_LOD 0, MAX_LOD 1000). `lod` is
 // log2(rho) for an implicit LOD (the caller has applied 0.5 * fast_log2 or

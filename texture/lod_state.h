@@ -31,6 +31,7 @@ struct LodState {
         s.equal = s.min_lod == s.max_lod;
         return s;
     }
+    bool operator==(const LodState&) const = default;
     // GL's defaults: the selector's shortcut may run.
     bool plain() const { return !bias_non_zero && !apply_min && !apply_max && !equal; }
     // §2.4 step 4: the sampler's bias, then MAX_LOD, then MIN_LOD (a NaN

@@ -144,6 +144,7 @@ Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
     // A texture with one level has no mip filter (level_zero_only).
     mip_filter_ = last_level_ == 0 ? MipFilter::None : texture.mip_filter;
     lod_ = LodState::of(texture);
+    shape_ = LodShape{texture.width, texture.height, last_level_, mip_filter_, lod_};
     pot_w_ = is_pot(texture.width);
     pot_h_ = is_pot(texture.height);
     auto simple_wrap = [](TextureWrap w) { return w == TextureWrap::Repeat || w == TextureWrap::ClampToEdge; };
@@ -532,6 +533,19 @@ Vec4 Sampler2D::sample(const Vec2& st, unsigned read, Mask active) const {
     if (none(active)) return Vec4(Float(0.0f));
     if (!needs_lod()) return sample_base(st, read, active);
     return sample_levels(st, choose_from_rho2(quad_rho2(st), mip_filter_, last_level_, lod_), true, read, active);
+}
+
+Sampler2D::ImplicitLevels Sampler2D::implicit_levels(const Vec2& st) const {
+    // Chosen even where this sampler needs no LOD: a sampler of the same
+    // shape with min != mag does.
+    return ImplicitLevels{choose_from_rho2(quad_rho2(st), mip_filter_, last_level_, lod_), shape_};
+}
+
+Vec4 Sampler2D::sample(const Vec2& st, const ImplicitLevels& levels, unsigned read, Mask active) const {
+    if (!(levels.shape == shape_)) return sample(st, read, active);
+    if (none(active)) return Vec4(Float(0.0f));
+    if (!needs_lod()) return sample_base(st, read, active);
+    return sample_levels(st, levels.choice, true, read, active);
 }
 
 Vec4 Sampler2D::sample_bias(const Vec2& st, Float bias) const {

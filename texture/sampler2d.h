@@ -33,6 +33,18 @@ public:
     // but read anything, so their work may be skipped where that keeps
     // every active lane's bits.
     Vec4 sample(const Vec2& st, unsigned read = texel::kReadRGBA, Mask active = Mask(true)) const;
+    // texture()'s levels at a coordinate, chosen once for every read there
+    // (as a compiler shares the coordinate's derivatives between reads):
+    // sample(st, levels) equals sample(st) bit for bit on this sampler and
+    // on any other whose texture has the same size, levels and LOD state; a
+    // sampler of another shape chooses its own levels from st.
+    struct ImplicitLevels {
+        texel::LevelChoice choice;
+        texel::LodShape shape;
+    };
+    ImplicitLevels implicit_levels(const Vec2& st) const;
+    Vec4 sample(const Vec2& st, const ImplicitLevels& levels, unsigned read = texel::kReadRGBA,
+                Mask active = Mask(true)) const;
     // GLSL texture(sampler2D, vec2, float bias): the quad's LOD plus each
     // lane's bias.
     Vec4 sample_bias(const Vec2& st, Float bias) const;
@@ -126,6 +138,7 @@ private:
     bool pot_w_ = true, pot_h_ = true;
     MipFilter mip_filter_ = MipFilter::None;
     texel::LodState lod_;
+    texel::LodShape shape_;
     std::vector<int32_t> level_width_, level_height_, level_base_;
     // The same as lane tables, for chains of at most 2 * kLanes levels
     // (every texture up to 32768 texels on a side even with 8 lanes), entry

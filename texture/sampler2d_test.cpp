@@ -312,6 +312,47 @@ TEST(ReadMask, NamedChannelsKeepTheirBits) {
     }
 }
 
+// Levels chosen once at a coordinate serve every sampler of the same
+// shape bit for bit, and a sampler of another shape (size, levels, mip
+// filter, LOD bias) chooses its own from the coordinate.
+TEST(ImplicitLevels, SharedAmongSamplersOfOneShape) {
+    auto texture = [](int w, int h, MipFilter mip, TextureFilter min, float bias) {
+        Texture t = ramp(TextureFormat::RGBA8, min, TextureWrap::Repeat, w, h);
+        t.mag_filter = TextureFilter::Linear;
+        t.mip_filter = mip;
+        t.lod_bias = bias;
+        if (mip != MipFilter::None) generate_box_mips(t, full_chain_levels(w, h));
+        return t;
+    };
+    const Texture a = texture(64, 32, MipFilter::Linear, TextureFilter::Linear, 0.0f);
+    const Texture others[] = {texture(64, 32, MipFilter::Linear, TextureFilter::Linear, 0.0f),
+                              texture(64, 32, MipFilter::Linear, TextureFilter::Nearest, 0.0f),
+                              texture(32, 32, MipFilter::Linear, TextureFilter::Linear, 0.0f),
+                              texture(64, 32, MipFilter::Nearest, TextureFilter::Linear, 0.0f),
+                              texture(64, 32, MipFilter::Linear, TextureFilter::Linear, 1.5f),
+                              texture(64, 32, MipFilter::None, TextureFilter::Nearest, 0.0f),
+                              ramp(TextureFormat::RGBA32F, TextureFilter::Linear, TextureWrap::Repeat, 64, 32)};
+    const Sampler2D sa(a);
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> coord(-1.0f, 2.0f), near(-0.05f, 0.05f);
+    for (const Texture& t : others) {
+        const Sampler2D sb(t);
+        for (int round = 0; round < 200; ++round) {
+            Vec2 st = random_lanes(rng, coord);
+            for (int lane = 0; lane < kLanes; ++lane)  // quads from magnified to far minified
+                st.x.set(lane, st.x[lane & ~3] + near(rng) * float(round % 4)), st.y.set(lane, st.y[lane & ~3] + near(rng));
+            const Sampler2D::ImplicitLevels levels = sa.implicit_levels(st);
+            const Vec4 own_a = sa.sample(st), own_b = sb.sample(st);
+            const Vec4 shared_a = sa.sample(st, levels), shared_b = sb.sample(st, levels);
+            for (int c = 0; c < 4; ++c)
+                for (int lane = 0; lane < kLanes; ++lane) {
+                    ASSERT_EQ(own_a[c][lane], shared_a[c][lane]);
+                    ASSERT_EQ(own_b[c][lane], shared_b[c][lane]) << "texture " << (&t - others);
+                }
+        }
+    }
+}
+
 // texture() told which lanes use its result (`active`) gives those lanes
 // the bits of a read on all lanes, whatever the others read: lanes far
 // apart, on other levels, at the edges, with every wrap, all filters; and
