@@ -36,11 +36,52 @@ using Level = Sampler2D::LevelLanes;
 // them. Returns false (nothing written) otherwise.
 #if defined(ST_SIMD_AVX512)
 // The same for AVX-512 and its two 8-lane groups (4x2 pixels each), without
-// reductions: each group's window starts at its lane 0's lower taps (the
-// lowest for a texture that is not mirrored on the screen) and is 8 texels
-// by 4 rows, as in the 8-lane form below. The four tables of a call (row r
-// of both groups) make two 32-entry permutes and a select per tap.
-ST_INLINE bool fetch_window_groups(const int32_t* rgba8, int width, int height, const LinearTaps8& u, const LinearTaps8& v,
+// reductions: each group's window starts at its lane 0's taps (the lowest
+// for a texture that is not mirrored on the screen), and is 8 texels by 2
+// rows for each row of taps (a magnified or unscaled read). The four tables
+// of a call (each group's two rows under v.i0 and under v.i1) make two
+// 32-entry permutes per tap row.
+ST_INLINE bool fetch_window_groups_2rows(const int32_t* rgba8, int width, int height, const LinearTaps8& u, const LinearTaps8& v,
+                         Int& t00, Int& t10, Int& t01, Int& t11) {
+    const __m512i lane0_of_group = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
+    auto group_base = [&](Int x) __attribute__((always_inline)) {
+        return Int(IntV(_mm512_permutexvar_epi32(lane0_of_group, __m512i(x.v))));
+    };
+    const Int u_base = group_base(u.i0), v0_base = group_base(v.i0), v1_base = group_base(v.i1);
+    const Int x0 = u.i0 - u_base, x1 = u.i1 - u_base, y0 = v.i0 - v0_base, y1 = v.i1 - v1_base;
+    using UV = uint32_t __attribute__((vector_size(64)));
+    const auto outside = [](Int d, uint32_t n) __attribute__((always_inline)) { return __m512i(IntV(UV(d.v) >= n)); };
+    const __m512i bad = _mm512_or_si512(_mm512_or_si512(outside(x0, 8), outside(x1, 8)),
+                                        _mm512_or_si512(outside(y0, 2), outside(y1, 2)));
+    if (_mm512_test_epi32_mask(bad, bad)) return false;
+    // Row r of group g's window under base row b: 8 texels from its u_base.
+    auto row = [&](int g, int32_t b, int r) __attribute__((always_inline)) {
+        const int32_t y = std::min(b + r, height - 1);  // a row past the edge is loaded but never picked
+        return _mm256_loadu_si256(
+            reinterpret_cast<const __m256i*>(&rgba8[size_t(y) * size_t(width) + size_t(u_base[8 * g])]));
+    };
+    auto table = [&](const Int& base, __m512i& lo, __m512i& hi) __attribute__((always_inline)) {
+        // lo = row 0 of both groups, hi = row 1: entry r * 16 + g * 8 + x.
+        lo = _mm512_inserti64x4(_mm512_castsi256_si512(row(0, base[0], 0)), row(1, base[8], 0), 1);
+        hi = _mm512_inserti64x4(_mm512_castsi256_si512(row(0, base[0], 1)), row(1, base[8], 1), 1);
+    };
+    __m512i a_lo, a_hi, b_lo, b_hi;
+    table(v0_base, a_lo, a_hi);
+    table(v1_base, b_lo, b_hi);
+    const __m512i group8 = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
+    auto index = [&](Int y, Int x) __attribute__((always_inline)) {
+        return _mm512_add_epi32(_mm512_add_epi32(__m512i((y << 4).v), group8), __m512i(x.v));
+    };
+    t00 = Int(IntV(_mm512_permutex2var_epi32(a_lo, index(y0, x0), a_hi)));
+    t10 = Int(IntV(_mm512_permutex2var_epi32(a_lo, index(y0, x1), a_hi)));
+    t01 = Int(IntV(_mm512_permutex2var_epi32(b_lo, index(y1, x0), b_hi)));
+    t11 = Int(IntV(_mm512_permutex2var_epi32(b_lo, index(y1, x1), b_hi)));
+    return true;
+}
+// Where that fails, each group's window 8 texels by 4 rows from its lane
+// 0's lower taps, as in the 8-lane form below: the four tables of a call
+// (row r of both groups) make two 32-entry permutes and a select per tap.
+ST_INLINE bool fetch_window_groups_4rows(const int32_t* rgba8, int width, int height, const LinearTaps8& u, const LinearTaps8& v,
                          Int& t00, Int& t10, Int& t01, Int& t11) {
     const __m512i lane0_of_group = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
     auto group_base = [&](Int x) __attribute__((always_inline)) {
@@ -79,13 +120,38 @@ ST_INLINE bool fetch_window_groups(const int32_t* rgba8, int width, int height, 
 }
 #else
 // The same for one 8-lane group (4x2 pixels) without reductions: the window
-// starts at lane 0's lower taps and is 8 texels by 4 rows, enough for both
-// rows of taps of a quad pair that reads up to two texels a pixel (the
-// finer level of a trilinear read), so four row loads and, per tap, a
-// permute of each row and three selects. Lane 0 is the group's top-left
-// pixel; where its taps are not the lowest (a texture mirrored on the
-// screen, lanes of a loop that moved apart) this returns false.
-ST_INLINE bool fetch_window_group(const int32_t* rgba8, int width, int height, const LinearTaps8& u, const LinearTaps8& v,
+// starts at lane 0's taps and is 8 texels by 2 rows for each row of taps
+// (a magnified or unscaled read), so four row loads and two permutes a
+// tap. Lane 0 is the group's top-left pixel; where its taps are not the
+// lowest (a texture mirrored on the screen, lanes of a loop that moved
+// apart) this returns false.
+ST_INLINE bool fetch_window_group_2rows(const int32_t* rgba8, int width, int height, const LinearTaps8& u, const LinearTaps8& v,
+                                  Int& t00, Int& t10, Int& t01, Int& t11) {
+    const int32_t u_base = u.i0[0], v0_base = v.i0[0], v1_base = v.i1[0];
+    const Int x0 = u.i0 - Int(u_base), x1 = u.i1 - Int(u_base), y0 = v.i0 - Int(v0_base), y1 = v.i1 - Int(v1_base);
+    // Inside means x0, x1 in [0, kLanes) and y0, y1 in [0, 2): no bit set
+    // outside the low ones (a negative difference has the sign bit).
+    const Int bad = ((x0 | x1) & Int(~(kLanes - 1))) | ((y0 | y1) & Int(~1));
+    if (simd::any_bit(bad)) return false;
+    auto row = [&](int32_t y) __attribute__((always_inline)) {
+        // A row past the last is loaded but never picked (in bounds: the
+        // texels have kLanes of padding).
+        return Int::load(&rgba8[size_t(std::min(y, height - 1)) * size_t(width) + size_t(u_base)]);
+    };
+    const Int a0 = row(v0_base), a1 = row(v0_base + 1), b0 = row(v1_base), b1 = row(v1_base + 1);
+    const Mask second0 = y0 != Int(0), second1 = y1 != Int(0);
+    t00 = select(second0, simd::permute(a1, x0), simd::permute(a0, x0));
+    t10 = select(second0, simd::permute(a1, x1), simd::permute(a0, x1));
+    t01 = select(second1, simd::permute(b1, x0), simd::permute(b0, x0));
+    t11 = select(second1, simd::permute(b1, x1), simd::permute(b0, x1));
+    return true;
+}
+// Where that fails, a window from lane 0's lower taps 8 texels by 4 rows,
+// enough for both rows of taps of a quad pair that reads up to two texels
+// a pixel (the finer level of a trilinear read): four row loads and, per
+// tap, a permute of each row and three selects (the 2-row form first: this
+// one costs a third more where both fit).
+ST_INLINE bool fetch_window_group_4rows(const int32_t* rgba8, int width, int height, const LinearTaps8& u, const LinearTaps8& v,
                                   Int& t00, Int& t10, Int& t01, Int& t11) {
     const int32_t u_base = u.i0[0], v_base = v.i0[0];
     const Int x0 = u.i0 - Int(u_base), x1 = u.i1 - Int(u_base), y0 = v.i0 - Int(v_base), y1 = v.i1 - Int(v_base);
@@ -397,10 +463,12 @@ ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& lanes_
         const int32_t* rows = texels + base0;
         const int w = level.width[0];
 #if defined(ST_SIMD_AVX512)
-        windowed = fetch_window_groups(rows, w, level.height[0], u, v, t00, t10, t01, t11) ||
+        windowed = fetch_window_groups_2rows(rows, w, level.height[0], u, v, t00, t10, t01, t11) ||
+                   fetch_window_groups_4rows(rows, w, level.height[0], u, v, t00, t10, t01, t11) ||
                    fetch_window(rows, w, u, v, t00, t10, t01, t11);
 #else
-        windowed = fetch_window_group(rows, w, level.height[0], u, v, t00, t10, t01, t11) ||
+        windowed = fetch_window_group_2rows(rows, w, level.height[0], u, v, t00, t10, t01, t11) ||
+                   fetch_window_group_4rows(rows, w, level.height[0], u, v, t00, t10, t01, t11) ||
                    fetch_window(rows, w, u, v, t00, t10, t01, t11);
 #endif
     }
