@@ -8,6 +8,7 @@
 // samplers' headers.
 #pragma once
 
+#include "shading/control_flow.h"
 #include "texture/sampler2d.h"
 #include "texture/sampler_cube.h"
 
@@ -16,6 +17,14 @@ namespace st::glsl {
 // sampler2D, fragment twins (lanes).
 inline Vec4 texture(const Sampler2D& s, const Vec2& p) { return s.sample(p); }
 inline Vec4 texture(const Sampler2D& s, const Vec2& p, const Float& bias) { return s.sample_bias(p, bias); }
+// texture() whose result is stored with exec.assign, and of which the
+// shader uses the channels in `read` (texel::kReadR for .r): the lanes
+// exec leaves out and the other channels read anything, so the sampler may
+// skip them (a loop's last pass reads nothing), the active lanes' bits
+// unchanged. The LOD still comes from every lane of each quad.
+inline Vec4 texture(const Sampler2D& s, const Vec2& p, const Exec& exec, unsigned read = texel::kReadRGBA) {
+    return s.sample(p, read, exec.active());
+}
 inline Vec4 textureLod(const Sampler2D& s, const Vec2& p, const Float& lod) { return s.sample_lod(p, lod); }
 inline Vec4 textureGrad(const Sampler2D& s, const Vec2& p, const Vec2& dpdx, const Vec2& dpdy) {
     return s.sample_grad(p, dpdx, dpdy);

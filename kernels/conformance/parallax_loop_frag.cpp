@@ -5,6 +5,7 @@
 #include "kernels/conformance/conformance.h"
 
 #include "shading/glsl_math.h"
+#include "shading/glsl_texture.h"
 #include "texture/sampler2d.h"
 
 namespace st {
@@ -39,8 +40,8 @@ Vec4 ParallaxLoopFragment::main(const Fragment& frag) const {
     exec.loop([&](Loop& loop) {
         loop.break_if(!(depth < map_depth));
         exec.assign(uv, uv - step_uv);
-        // Only the lanes still in the loop use the read (exec.active()).
-        exec.assign(map_depth, depth_map_->sample(uv, texel::kReadR, exec.active()).x);
+        // Only the lanes still in the loop use this read (exec's).
+        exec.assign(map_depth, texture(*depth_map_, uv, exec, texel::kReadR).x);
         exec.assign(depth, depth + layer_depth);
     });
     // The crossing between the last two layers.
