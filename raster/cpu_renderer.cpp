@@ -203,7 +203,7 @@ void CpuRenderer::execute() {
         const auto t1 = Clock::now();
         m.binner.run(draws, pass.width, pass.height, viewport, m.pool);
         if (const SetupChunk* bad = m.binner.first_unsnappable())
-            throw std::runtime_error(
+            throw UnrenderableInput(
                 "pass " + std::to_string(pi) + ", draw " + std::to_string(bad->draw) + ", triangle " +
                 std::to_string(bad->first_unsnappable) +
                 ": a vertex's window position is not finite (clip w at or within a few ULP of 0, or a vertex at "

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,13 @@
 namespace st {
 
 class TwinLibrary;
+
+// A frame the renderer cannot draw as llvmpipe would, through no fault of
+// its own (a vertex the vertex twin put at clip w ~ 0): a refusal of the
+// input, found only once the vertex stage has run.
+struct UnrenderableInput : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 class CpuRenderer {
 public:

@@ -19,6 +19,7 @@
 #include "app/memory_budget.h"
 #include "app/progress.h"
 #include "app/tool_data.h"
+#include "raster/cpu_renderer.h"
 #include "scene/input_error.h"
 #include "scene/json_reader.h"
 #include "scene/param_sampler.h"
@@ -150,6 +151,10 @@ public:
                     for (const auto& f : o.failures) r.failures.push_back(o.name + ": " + f);
                 r.message = r.failures.empty() ? "failed" : r.failures.front();
             }
+        } catch (const UnrenderableInput& e) {
+            // A refusal the renderer can only make once the vertex twin has
+            // run (the reader does not see where a vertex lands).
+            r.outcome = Outcome::Refused, r.message = e.what();
         } catch (const std::exception& e) {
             r.outcome = Outcome::Error, r.message = e.what();
         }
