@@ -228,11 +228,6 @@ Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
         level_base_.push_back(int32_t(texels));
         texels += size_t(w) * size_t(h);
     }
-    for (int l = 0; l <= last_level_ && last_level_ < 2 * kLanes; ++l) {
-        width_table_[l / kLanes].set(l % kLanes, level_width_[size_t(l)]);
-        height_table_[l / kLanes].set(l % kLanes, level_height_[size_t(l)]);
-        base_table_[l / kLanes].set(l % kLanes, level_base_[size_t(l)]);
-    }
     load_texels(texels);
 }
 
@@ -311,24 +306,9 @@ void Sampler2D::build_alpha_quads() {
 ST_INLINE Sampler2D::LevelLanes Sampler2D::level_lanes(Int level) const {
     // level is in [0, last_level_] on every lane.
     LevelLanes l;
-    if (last_level_ == 0) {
-        l.width = Int(tex_->width);
-        l.height = Int(tex_->height);
-        l.base = Int(0);
-    } else if (last_level_ < kLanes) {
-        l.width = simd::permute(width_table_[0], level);
-        l.height = simd::permute(height_table_[0], level);
-        l.base = simd::permute(base_table_[0], level);
-    } else if (last_level_ < 2 * kLanes) {
-        l.width = simd::permute2(width_table_[0], width_table_[1], level);
-        l.height = simd::permute2(height_table_[0], height_table_[1], level);
-        l.base = simd::permute2(base_table_[0], base_table_[1], level);
-    } else {
-        const Mask all(true);
-        l.width = simd::gather(level_width_.data(), level, all);
-        l.height = simd::gather(level_height_.data(), level, all);
-        l.base = simd::gather(level_base_.data(), level, all);
-    }
+    l.width = level_width_.lookup(level);
+    l.height = level_height_.lookup(level);
+    l.base = level_base_.lookup(level);
     l.width_f = simd::to_float(l.width);
     l.height_f = simd::to_float(l.height);
     return l;

@@ -14,6 +14,7 @@
 #include "frame/frame.h"
 #include "simd/lane_vec.h"
 #include "texture/bilinear_taps.h"
+#include "texture/level_table.h"
 #include "texture/lod_selection.h"
 #include "texture/lod_state.h"
 
@@ -139,13 +140,8 @@ private:
     MipFilter mip_filter_ = MipFilter::None;
     texel::LodState lod_;
     texel::LodShape shape_;
-    std::vector<int32_t> level_width_, level_height_, level_base_;
-    // The same as lane tables, for chains of at most 2 * kLanes levels
-    // (every texture up to 32768 texels on a side even with 8 lanes), entry
-    // l of part l / kLanes: permutes instead of three gathers (which cost a
-    // third of a trilinear sample in the relief search with 16 lanes, and a
-    // fifth of its height reads with 8, where a 512-texel map has 10 levels).
-    Int width_table_[2] = {Int(0), Int(0)}, height_table_[2] = {Int(0), Int(0)}, base_table_[2] = {Int(0), Int(0)};
+    // Each level's size and where its texels start in the arrays below.
+    texel::LevelTable level_width_, level_height_, level_base_;
     // RGBA8 texels of every level as one int32 each (little-endian: R in the
     // low byte), and kLanes more, so that a texel and its right neighbour
     // are always one 8-byte load and a row of kLanes texels one load.

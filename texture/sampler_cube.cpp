@@ -90,10 +90,6 @@ SamplerCube::SamplerCube(const Texture& texture) : tex_(&texture) {
         level_base_.push_back(int32_t(texels));
         texels += size_t(kFaces) * size_t(w) * size_t(w);
     }
-    for (int l = 0; l <= last_level_ && last_level_ < 2 * kLanes; ++l) {
-        size_table_[l / kLanes].set(l % kLanes, level_size_[size_t(l)]);
-        base_table_[l / kLanes].set(l % kLanes, level_base_[size_t(l)]);
-    }
     if (texture.format == TextureFormat::RGBA8) {
         rgba8_.assign(texels + kLanes, 0);
         for (int l = 0; l <= last_level_; ++l) {
@@ -112,13 +108,7 @@ SamplerCube::SamplerCube(const Texture& texture) : tex_(&texture) {
 
 ST_INLINE SamplerCube::LevelLanes SamplerCube::level_lanes(Int level) const {
     // level is in [0, last_level_] on every lane.
-    if (last_level_ < kLanes)
-        return {simd::permute(size_table_[0], level), simd::permute(base_table_[0], level)};
-    if (last_level_ < 2 * kLanes)
-        return {simd::permute2(size_table_[0], size_table_[1], level),
-                simd::permute2(base_table_[0], base_table_[1], level)};
-    const Mask all(true);
-    return {simd::gather(level_size_.data(), level, all), simd::gather(level_base_.data(), level, all)};
+    return {level_size_.lookup(level), level_base_.lookup(level)};
 }
 
 ST_INLINE Vec4 SamplerCube::texel(const LevelLanes& level, Int face, Int x, Int y) const {

@@ -11,6 +11,7 @@
 
 #include "frame/frame.h"
 #include "simd/lane_vec.h"
+#include "texture/level_table.h"
 #include "texture/lod_state.h"
 
 namespace st {
@@ -54,10 +55,8 @@ private:
     MipFilter mip_filter_ = MipFilter::None;
     texel::LodState lod_;
     bool aos_ = false;  // RGBA8 NEAREST: llvmpipe's 8-bit path
-    std::vector<int32_t> level_size_, level_base_;
-    // The same as lane tables for chains of at most 2 * kLanes levels
-    // (faces up to 32768 texels even with 8 lanes): permutes, not gathers.
-    Int size_table_[2] = {Int(0), Int(0)}, base_table_[2] = {Int(0), Int(0)};
+    // Each level's face size and where its texels start in the arrays below.
+    texel::LevelTable level_size_, level_base_;
     std::vector<int32_t> rgba8_;
     std::vector<float> rgba32_;
 };
