@@ -35,6 +35,18 @@ using Level = Sampler2D::LevelLanes;
 // picks its texels with a permute: the same texels as the gathers, without
 // them. Returns false (nothing written) otherwise.
 #if defined(ST_SIMD_AVX512)
+// Each lane's x at lane 0 of its 8-lane group.
+ST_INLINE Int group_lane0(Int x) {
+    const __m512i lane0_of_group = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
+    return Int(IntV(_mm512_permutexvar_epi32(lane0_of_group, __m512i(x.v))));
+}
+// All ones in the lanes where d is outside [0, n) (a negative d compares
+// as a large unsigned one).
+ST_INLINE __m512i outside(Int d, uint32_t n) {
+    using UV = uint32_t __attribute__((vector_size(64)));
+    return __m512i(IntV(UV(d.v) >= n));
+}
+
 // The same for AVX-512 and its two 8-lane groups (4x2 pixels each), without
 // reductions: each group's window starts at its lane 0's taps (the lowest
 // for a texture that is not mirrored on the screen), and is 8 texels by 2
@@ -43,14 +55,8 @@ using Level = Sampler2D::LevelLanes;
 // 32-entry permutes per tap row.
 ST_INLINE bool fetch_window_groups_2rows(const int32_t* rgba8, int width, int height, const LinearTaps8& u, const LinearTaps8& v,
                          Int& t00, Int& t10, Int& t01, Int& t11) {
-    const __m512i lane0_of_group = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
-    auto group_base = [&](Int x) __attribute__((always_inline)) {
-        return Int(IntV(_mm512_permutexvar_epi32(lane0_of_group, __m512i(x.v))));
-    };
-    const Int u_base = group_base(u.i0), v0_base = group_base(v.i0), v1_base = group_base(v.i1);
+    const Int u_base = group_lane0(u.i0), v0_base = group_lane0(v.i0), v1_base = group_lane0(v.i1);
     const Int x0 = u.i0 - u_base, x1 = u.i1 - u_base, y0 = v.i0 - v0_base, y1 = v.i1 - v1_base;
-    using UV = uint32_t __attribute__((vector_size(64)));
-    const auto outside = [](Int d, uint32_t n) __attribute__((always_inline)) { return __m512i(IntV(UV(d.v) >= n)); };
     const __m512i bad = _mm512_or_si512(_mm512_or_si512(outside(x0, 8), outside(x1, 8)),
                                         _mm512_or_si512(outside(y0, 2), outside(y1, 2)));
     if (_mm512_test_epi32_mask(bad, bad)) return false;
@@ -83,14 +89,8 @@ ST_INLINE bool fetch_window_groups_2rows(const int32_t* rgba8, int width, int he
 // (row r of both groups) make two 32-entry permutes and a select per tap.
 ST_INLINE bool fetch_window_groups_4rows(const int32_t* rgba8, int width, int height, const LinearTaps8& u, const LinearTaps8& v,
                          Int& t00, Int& t10, Int& t01, Int& t11) {
-    const __m512i lane0_of_group = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
-    auto group_base = [&](Int x) __attribute__((always_inline)) {
-        return Int(IntV(_mm512_permutexvar_epi32(lane0_of_group, __m512i(x.v))));
-    };
-    const Int u_base = group_base(u.i0), v_base = group_base(v.i0);
+    const Int u_base = group_lane0(u.i0), v_base = group_lane0(v.i0);
     const Int x0 = u.i0 - u_base, x1 = u.i1 - u_base, y0 = v.i0 - v_base, y1 = v.i1 - v_base;
-    using UV = uint32_t __attribute__((vector_size(64)));
-    const auto outside = [](Int d, uint32_t n) __attribute__((always_inline)) { return __m512i(IntV(UV(d.v) >= n)); };
     const __m512i bad = _mm512_or_si512(_mm512_or_si512(outside(x0, 8), outside(x1, 8)),
                                         _mm512_or_si512(outside(y0, 4), outside(y1, 4)));
     if (_mm512_test_epi32_mask(bad, bad)) return false;
