@@ -84,6 +84,27 @@ ST_INLINE bool fetch_window_groups_2rows(const int32_t* rgba8, int width, int he
     t11 = Int(IntV(_mm512_permutex2var_epi32(b_lo, index(y1, x1), b_hi)));
     return true;
 }
+// The lower-left taps alone (every lane at a texel centre): each group's
+// two rows under its lane 0's, one permute.
+ST_INLINE bool fetch_window_groups_centre(const int32_t* rgba8, int width, int height, const LinearTaps8& u,
+                                          const LinearTaps8& v, Int& t00) {
+    const Int u_base = group_lane0(u.i0), v_base = group_lane0(v.i0);
+    const Int x0 = u.i0 - u_base, y0 = v.i0 - v_base;
+    const __m512i bad = _mm512_or_si512(outside(x0, 8), outside(y0, 2));
+    if (_mm512_test_epi32_mask(bad, bad)) return false;
+    auto rows = [&](int r) __attribute__((always_inline)) {
+        auto load = [&](int g) __attribute__((always_inline)) {
+            const int32_t y = std::min(v_base[8 * g] + r, height - 1);  // a row past the edge is loaded but never picked
+            return _mm256_loadu_si256(
+                reinterpret_cast<const __m256i*>(&rgba8[size_t(y) * size_t(width) + size_t(u_base[8 * g])]));
+        };
+        return _mm512_inserti64x4(_mm512_castsi256_si512(load(0)), load(1), 1);
+    };
+    const __m512i group8 = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
+    const __m512i index = _mm512_add_epi32(_mm512_add_epi32(__m512i((y0 << 4).v), group8), __m512i(x0.v));
+    t00 = Int(IntV(_mm512_permutex2var_epi32(rows(0), index, rows(1))));
+    return true;
+}
 // Where that fails, each group's window 8 texels by 4 rows from its lane
 // 0's lower taps, as in the 8-lane form below: the four tables of a call
 // (row r of both groups) make two 32-entry permutes and a select per tap.
@@ -144,6 +165,19 @@ ST_INLINE bool fetch_window_group_2rows(const int32_t* rgba8, int width, int hei
     t10 = select(second0, simd::permute(a1, x1), simd::permute(a0, x1));
     t01 = select(second1, simd::permute(b1, x0), simd::permute(b0, x0));
     t11 = select(second1, simd::permute(b1, x1), simd::permute(b0, x1));
+    return true;
+}
+// The lower-left taps alone (every lane at a texel centre): two rows from
+// lane 0's, a permute of each and a select.
+ST_INLINE bool fetch_window_group_centre(const int32_t* rgba8, int width, int height, const LinearTaps8& u,
+                                         const LinearTaps8& v, Int& t00) {
+    const int32_t u_base = u.i0[0], v_base = v.i0[0];
+    const Int x0 = u.i0 - Int(u_base), y0 = v.i0 - Int(v_base);
+    if (simd::any_bit((x0 & Int(~(kLanes - 1))) | (y0 & Int(~1)))) return false;
+    auto row = [&](int32_t y) __attribute__((always_inline)) {
+        return Int::load(&rgba8[size_t(std::min(y, height - 1)) * size_t(width) + size_t(u_base)]);
+    };
+    t00 = select(y0 != Int(0), simd::permute(row(v_base + 1), x0), simd::permute(row(v_base), x0));
     return true;
 }
 // Where that fails, a window from lane 0's lower taps 8 texels by 4 rows,
@@ -432,14 +466,31 @@ ST_INLINE void Sampler2D::filter_unorm8(const Vec2& st, const LevelLanes& lanes_
         u.i0 = follow(u.i0), u.i1 = follow(u.i1), v.i0 = follow(v.i0), v.i1 = follow(v.i1);
         level.base = follow(level.base), level.width = follow(level.width), level.height = follow(level.height);
     }
+    // All lanes on one level (level 0 without mips, or a LOD that changes
+    // slowly across the call): that level's rows can be windowed.
+    const int32_t base0 = level.base[0];
+    const bool one_level = level0 || all(level.base == Int(base0));
+    // Every lane that counts at a texel centre, to within the 8-bit weights
+    // (a texture drawn texel for texel: a background, a full-screen pass):
+    // both weights are 0, and lerp8 with weight 0 returns its first
+    // operand as it is, so the lower-left tap alone is the result.
+    if (!simd::any_bit(select(active, u.weight | v.weight, Int(0)))) {
+        Int t;
+#if defined(ST_SIMD_AVX512)
+        const bool windowed = one_level && fetch_window_groups_centre(texels + base0, level.width[0], level.height[0], u, v, t);
+#else
+        const bool windowed = one_level && fetch_window_group_centre(texels + base0, level.width[0], level.height[0], u, v, t);
+#endif
+        if (!windowed) t = simd::gather(texels, level.base + v.i0 * level.width + u.i0, Mask(true));
+        rb = read & kReadRedBlue ? red_blue(t) : Int(0);
+        ga = read & kReadGreenAlpha ? green_alpha(t) : Int(0);
+        return;
+    }
     // Each row's two taps are neighbours but where the wrap or the clamp
     // joins them otherwise; those lanes are fetched again.
     Int t00, t10, t01, t11;
     bool windowed = false;
-    // All lanes on one level (level 0 without mips, or a LOD that changes
-    // slowly across the call): that level's rows can be windowed.
-    const int32_t base0 = level.base[0];
-    if (level0 || all(level.base == Int(base0))) {
+    if (one_level) {
         const int32_t* rows = texels + base0;
         const int w = level.width[0];
 #if defined(ST_SIMD_AVX512)

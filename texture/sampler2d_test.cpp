@@ -6,6 +6,7 @@
 #include "texture/mip_generation.h"
 #include "texture/texel_math.h"
 
+#include <algorithm>
 #include <cstring>
 #include <iterator>
 #include <limits>
@@ -132,6 +133,46 @@ TEST_P(FilterTest, LanesAreIndependent) {
                 const glm::vec4 one = s.sample(glm::vec2(uv.x[lane], uv.y[lane]));
                 ASSERT_EQ(glm::vec4(all.x[lane], all.y[lane], all.z[lane], all.w[lane]), one)
                     << "round " << round << " lane " << lane;
+            }
+        }
+    }
+}
+
+// A texture read texel for texel (every lane at a texel centre, to within
+// the 8-bit weights) gives each lane its texel exactly, whether every lane
+// is centred (only the lower-left taps are read) or one is not (the whole
+// filter runs): blocks of lanes over random texels of both wraps, at the
+// edges too, and with lanes left out by an active mask.
+TEST(Unorm8Filter, TexelForTexelReadsGiveTheTexels) {
+    for (TextureWrap wrap : {TextureWrap::Repeat, TextureWrap::ClampToEdge})
+    for (int w : {16, 13, 512}) {
+        const Texture t = ramp(TextureFormat::RGBA8, TextureFilter::Linear, wrap, w, 11);
+        const Sampler2D s(t);
+        std::mt19937 rng{uint32_t(w)};
+        std::uniform_int_distribution<int> x0(-2, w), y0(-2, 11);
+        std::uniform_real_distribution<float> jitter(-0.0015f, 0.0015f);  // under 1/512 texel
+        std::uniform_int_distribution<unsigned> lanes(1, (1u << kLanes) - 1);
+        for (int round = 0; round < 300; ++round) {
+            const int bx = x0(rng), by = y0(rng);
+            Vec2 st;
+            int tx[kLanes], ty[kLanes];
+            for (int lane = 0; lane < kLanes; ++lane) {
+                tx[lane] = bx + lane % 4, ty[lane] = by + lane / 4;  // a block of texels, as pixels cover them
+                st.x.set(lane, (float(tx[lane]) + 0.5f + jitter(rng)) / float(w));
+                st.y.set(lane, (float(ty[lane]) + 0.5f + jitter(rng)) / 11.0f);
+            }
+            const int off_centre = round % 3 == 2 ? int(rng() % kLanes) : -1;
+            if (off_centre >= 0) st.x.set(off_centre, st.x[off_centre] + 0.3f / float(w));
+            const unsigned on = round % 2 ? lanes(rng) : (1u << kLanes) - 1;
+            const Vec4 got = s.sample(st, texel::kReadRGBA, Mask::from_bits(on));
+            for (int lane = 0; lane < kLanes; ++lane) {
+                if (lane == off_centre || !(on >> lane & 1u)) continue;
+                auto wrapped = [&](int i, int n) {
+                    return wrap == TextureWrap::Repeat ? ((i % n) + n) % n : std::clamp(i, 0, n - 1);
+                };
+                const glm::vec4 want = s.fetch(wrapped(tx[lane], w), wrapped(ty[lane], 11));
+                for (int c = 0; c < 4; ++c)
+                    ASSERT_EQ(got[c][lane], want[c]) << "lane " << lane << " round " << round << " size " << w;
             }
         }
     }
