@@ -146,10 +146,9 @@ void CpuRenderer::Impl::run_vertex_stage(PreparedDraw& d, const Viewport& viewpo
 void CpuRenderer::Impl::refresh_target_textures(std::vector<PreparedDraw>& draws) {
     for (PreparedDraw& d : draws)
         for (auto& tt : d.target_textures) {
-            const auto& levels = targets.at(tt.texture.target);
-            tt.texture.texels32 = levels[0];
-            for (size_t l = 1; l < levels.size(); ++l) tt.texture.mips[l - 1].texels32 = levels[l];
-            tt.sampler->reload_texels();
+            // Straight from the target into the sampler's arrays (the
+            // texture's own texel arrays are not read once it is bound).
+            tt.sampler->reload_texels(targets.at(tt.texture.target));
         }
 }
 
@@ -216,9 +215,14 @@ void CpuRenderer::execute() {
         m.pool.run(int(order.size()), [&](int i, int worker) {
             m.tile_shaders[size_t(worker)].shade(order[size_t(i)], m.binner, draws, pass, *fb, outputs);
         });
-        if (!pass.target.empty()) m.targets.at(pass.target)[size_t(pass.level)] = fb->texels();
+        // The targets' texels for later passes, a block row a job (they
+        // are the size the frame allocated for them).
+        auto keep = [&](const Framebuffer& from, std::vector<float>& to) {
+            m.pool.run(from.blocks_y, [&](int row, int) { from.texels_of_block_row(row, to.data()); });
+        };
+        if (!pass.target.empty()) keep(*fb, m.targets.at(pass.target)[size_t(pass.level)]);
         for (size_t k = 0; k < pass.outputs.size(); ++k)
-            m.targets.at(pass.outputs[k].target)[size_t(pass.outputs[k].level)] = outputs[k]->texels();
+            keep(*outputs[k], m.targets.at(pass.outputs[k].target)[size_t(pass.outputs[k].level)]);
         const auto t3 = Clock::now();
 
         StageTimes tiles;

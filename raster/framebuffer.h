@@ -55,6 +55,24 @@ struct Framebuffer {
         return glm::vec4(c[0], c[kGroupLanes], c[2 * kGroupLanes], c[3 * kGroupLanes]);
     }
 
+    // Rows [4 * block_row, 4 * block_row + 4) of texels() into `out` (sized
+    // for the whole image), block by block: a render target's copy from one
+    // pass to the next, one job per block row on the worker pool.
+    void texels_of_block_row(int block_row, float* out) const {
+        const int y0 = block_row * kBlockSize;
+        for (int bx = 0; bx < blocks_x; ++bx) {
+            const int x0 = bx * kBlockSize;
+            const float* block_colour = &colour[block(x0, y0) * 2 * kGroupFloats];
+            for (int dy = 0; dy < kBlockSize && y0 + dy < height; ++dy)
+                for (int dx = 0; dx < kBlockSize && x0 + dx < width; ++dx) {
+                    const int lane = block_lane(dx, dy);
+                    const float* c = block_colour + (lane / kGroupLanes) * kGroupFloats + lane % kGroupLanes;
+                    float* o = out + (size_t(y0 + dy) * size_t(width) + size_t(x0 + dx)) * 4;
+                    o[0] = c[0], o[1] = c[kGroupLanes], o[2] = c[2 * kGroupLanes], o[3] = c[3 * kGroupLanes];
+                }
+        }
+    }
+
     // The colour as RGBA texels, row 0 at the bottom (glReadPixels order),
     // and back: how a render target passes from one pass to the next.
     std::vector<float> texels() const {

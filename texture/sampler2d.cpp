@@ -16,6 +16,8 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 
 #include "texture/srgb_decode.h"
 #include "texture/texel_formats.h"
@@ -268,10 +270,11 @@ Sampler2D::Sampler2D(const Texture& texture) : tex_(&texture) {
 // Copies the texture's texels into the sampler's arrays, sized for
 // `texels` texels of every level; arrays of that size already are reused
 // as they stand (their padding stays zero).
-void Sampler2D::load_texels(size_t texels) {
+void Sampler2D::load_texels(size_t texels, const std::vector<std::vector<float>>* float_levels) {
     const Texture& texture = *tex_;
     auto level_bytes = [&](int l) { return l ? texture.mips[size_t(l - 1)].texels8.data() : texture.texels8.data(); };
     auto level_floats = [&](int l) {
+        if (float_levels) return (*float_levels)[size_t(l)].data();
         return l ? texture.mips[size_t(l - 1)].texels32.data() : texture.texels32.data();
     };
     if (texture.format == TextureFormat::RGBA8) {
@@ -308,6 +311,17 @@ void Sampler2D::load_texels(size_t texels) {
 void Sampler2D::reload_texels() {
     const size_t texels = size_t(level_base_.back()) + size_t(level_width_.back()) * size_t(level_height_.back());
     load_texels(texels);
+}
+
+void Sampler2D::reload_texels(const std::vector<std::vector<float>>& levels) {
+    const bool floats = tex_->format != TextureFormat::RGBA8 && tex_->format != TextureFormat::SRGB8_ALPHA8;
+    if (!floats || levels.size() != level_width_.size())
+        throw std::invalid_argument("reload_texels: a float texture's levels, one array each");
+    for (size_t l = 0; l < levels.size(); ++l)
+        if (levels[l].size() != size_t(level_width_[l]) * size_t(level_height_[l]) * 4)
+            throw std::invalid_argument("reload_texels: level " + std::to_string(l) + " is not the texture's size");
+    const size_t texels = size_t(level_base_.back()) + size_t(level_width_.back()) * size_t(level_height_.back());
+    load_texels(texels, &levels);
 }
 
 // The right (or lower) neighbour of texel i on an axis of n texels, as

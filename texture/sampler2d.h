@@ -89,8 +89,11 @@ public:
 
     // The texture's texels changed and nothing else did (a render target
     // that a later pass samples, refreshed each frame): copies them in
-    // again, into the arrays the constructor made, without allocating.
+    // again, into the arrays the constructor made, without allocating;
+    // from the texture, or from `levels` (a float texture's levels, RGBA
+    // floats as the texture would hold them) without going through it.
     void reload_texels();
+    void reload_texels(const std::vector<std::vector<float>>& levels);
 
     const Texture& texture() const { return *tex_; }
     int width() const { return tex_->width; }
@@ -126,7 +129,7 @@ private:
     Vec4 texel(const LevelLanes& level, Int x, Int y, unsigned read = texel::kReadRGBA) const;
     void row_pair(const LevelLanes& level, const texel::LinearTaps& u, Int y, unsigned read, Vec4& left,
                   Vec4& right) const;
-    void load_texels(size_t texels);
+    void load_texels(size_t texels, const std::vector<std::vector<float>>* float_levels = nullptr);
     void build_alpha_quads();
     Int alpha_bilinear(const Vec2& st, const LevelLanes& level) const;
 

@@ -11,6 +11,7 @@
 #include <iterator>
 #include <limits>
 #include <random>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -511,6 +512,10 @@ TEST(ReloadTexels, SameAsANewSampler) {
         t.mip_filter = MipFilter::Linear;
         generate_box_mips(t, full_chain_levels(32, 16));
         Sampler2D reloaded(t);
+        // A sampler of the texture as built, to be reloaded from level
+        // arrays outside it (a render target's) below.
+        const Texture original = t;
+        Sampler2D from_levels(original);
         // New texels in every level, as a pass that drew them would leave.
         auto change = [&](auto& texels, int seed) {
             for (size_t i = 0; i < texels.size(); ++i)
@@ -526,12 +531,28 @@ TEST(ReloadTexels, SameAsANewSampler) {
             for (auto& m : t.mips) for (float& v : m.texels32) v /= 251.0f;
         }
         reloaded.reload_texels();
+        // The new texels from level arrays, the texture `original` itself
+        // left as it was built.
+        if (format != TextureFormat::RGBA8) {
+            std::vector<std::vector<float>> levels{t.texels32};
+            for (const auto& m : t.mips) levels.push_back(m.texels32);
+            from_levels.reload_texels(levels);
+            levels.back().pop_back();
+            EXPECT_THROW(from_levels.reload_texels(levels), std::invalid_argument);  // a level of another size
+            levels.pop_back();
+            EXPECT_THROW(from_levels.reload_texels(levels), std::invalid_argument);  // a level short
+        }
         const Sampler2D fresh(t);
         std::mt19937 rng(11);
         std::uniform_real_distribution<float> coord(-1.0f, 2.0f), grad(-0.3f, 0.3f);
         for (int round = 0; round < 100; ++round) {
             const Vec2 st = random_lanes(rng, coord), dx = random_lanes(rng, grad), dy = random_lanes(rng, grad);
             const Vec4 a = reloaded.sample_grad(st, dx, dy), b = fresh.sample_grad(st, dx, dy);
+            if (format != TextureFormat::RGBA8) {
+                const Vec4 c = from_levels.sample_grad(st, dx, dy);
+                for (int lane = 0; lane < kLanes; ++lane)
+                    for (int k = 0; k < 4; ++k) ASSERT_EQ(bits_of(c[k][lane]), bits_of(b[k][lane])) << int(format);
+            }
             const Float alpha_a = reloaded.sample_grad_alpha(st, reloaded.grad_levels(dx, dy));
             const Float alpha_b = fresh.sample_grad_alpha(st, fresh.grad_levels(dx, dy));
             for (int lane = 0; lane < kLanes; ++lane) {
