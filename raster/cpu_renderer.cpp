@@ -144,12 +144,15 @@ void CpuRenderer::Impl::run_vertex_stage(PreparedDraw& d, const Viewport& viewpo
 // texture and its sampler (same size and levels, so the twin's binding
 // stays valid; nothing is allocated).
 void CpuRenderer::Impl::refresh_target_textures(std::vector<PreparedDraw>& draws) {
+    // Straight from the target into the sampler's arrays (the texture's own
+    // texel arrays are not read once it is bound), a texture a job.
+    std::vector<PreparedDraw::TargetTexture*> all;
     for (PreparedDraw& d : draws)
-        for (auto& tt : d.target_textures) {
-            // Straight from the target into the sampler's arrays (the
-            // texture's own texel arrays are not read once it is bound).
-            tt.sampler->reload_texels(targets.at(tt.texture.target));
-        }
+        for (auto& tt : d.target_textures) all.push_back(&tt);
+    pool.run(int(all.size()), [&](int i, int) {
+        PreparedDraw::TargetTexture& tt = *all[size_t(i)];
+        tt.sampler->reload_texels(targets.at(tt.texture.target));
+    });
 }
 
 void CpuRenderer::execute() {
@@ -165,8 +168,10 @@ void CpuRenderer::execute() {
                 m.targets[t.name].emplace_back(
                     size_t(std::max(1, t.width >> level)) * size_t(std::max(1, t.height >> level)) * 4, 0.0f);
     } else {
+        std::vector<std::vector<float>*> all;
         for (auto& [name, levels] : m.targets)
-            for (std::vector<float>& level : levels) std::fill(level.begin(), level.end(), 0.0f);
+            for (std::vector<float>& level : levels) all.push_back(&level);
+        m.pool.run(int(all.size()), [&](int i, int) { std::fill(all[size_t(i)]->begin(), all[size_t(i)]->end(), 0.0f); });
     }
     bool frame_started = false;  // a frame pass has drawn into m.result this frame
     for (size_t pi = 0; pi < m.frame.passes.size(); ++pi) {
