@@ -30,6 +30,18 @@ ST_INLINE __m512i outside(Int d, uint32_t n) {
     return __m512i(IntV(UV(d.v) >= n));
 }
 
+// Row r of both groups' windows, each 8 texels from its group's u_base on
+// row v_base + r: entry g * 8 + x is group g's texel x. A row past the
+// last is loaded but never picked (in bounds: the texels have kLanes of
+// padding).
+ST_INLINE __m512i group_rows(const int32_t* rgba8, int width, int height, const Int& u_base, const Int& v_base, int r) {
+    auto load = [&](int g) __attribute__((always_inline)) {
+        const int32_t y = std::min(v_base[8 * g] + r, height - 1);
+        return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(&rgba8[size_t(y) * size_t(width) + size_t(u_base[8 * g])]));
+    };
+    return _mm512_inserti64x4(_mm512_castsi256_si512(load(0)), load(1), 1);
+}
+
 // AVX-512's two 8-lane groups (4x2 pixels each), without reductions: each
 // group's window starts at its lane 0's taps (the lowest for a texture that
 // is not mirrored on the screen), and is 8 texels by 2 rows for each row of
@@ -75,14 +87,7 @@ ST_INLINE bool fetch_window_groups_centre(const int32_t* rgba8, int width, int h
     const Int x0 = u.i0 - u_base, y0 = v.i0 - v_base;
     const __m512i bad = _mm512_or_si512(outside(x0, 8), outside(y0, 2));
     if (_mm512_test_epi32_mask(bad, bad)) return false;
-    auto rows = [&](int r) __attribute__((always_inline)) {
-        auto load = [&](int g) __attribute__((always_inline)) {
-            const int32_t y = std::min(v_base[8 * g] + r, height - 1);  // a row past the edge is loaded but never picked
-            return _mm256_loadu_si256(
-                reinterpret_cast<const __m256i*>(&rgba8[size_t(y) * size_t(width) + size_t(u_base[8 * g])]));
-        };
-        return _mm512_inserti64x4(_mm512_castsi256_si512(load(0)), load(1), 1);
-    };
+    auto rows = [&](int r) __attribute__((always_inline)) { return group_rows(rgba8, width, height, u_base, v_base, r); };
     const __m512i group8 = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
     const __m512i index = _mm512_add_epi32(_mm512_add_epi32(__m512i((y0 << 4).v), group8), __m512i(x0.v));
     t00 = Int(IntV(_mm512_permutex2var_epi32(rows(0), index, rows(1))));
@@ -98,15 +103,7 @@ ST_INLINE bool fetch_window_groups_4rows(const int32_t* rgba8, int width, int he
     const __m512i bad = _mm512_or_si512(_mm512_or_si512(outside(x0, 8), outside(x1, 8)),
                                         _mm512_or_si512(outside(y0, 4), outside(y1, 4)));
     if (_mm512_test_epi32_mask(bad, bad)) return false;
-    // Row r of both groups' windows: entry g * 8 + x is group g's texel x.
-    auto rows = [&](int r) __attribute__((always_inline)) {
-        auto load = [&](int g) __attribute__((always_inline)) {
-            const int32_t y = std::min(v_base[8 * g] + r, height - 1);  // a row past the edge is loaded but never picked
-            return _mm256_loadu_si256(
-                reinterpret_cast<const __m256i*>(&rgba8[size_t(y) * size_t(width) + size_t(u_base[8 * g])]));
-        };
-        return _mm512_inserti64x4(_mm512_castsi256_si512(load(0)), load(1), 1);
-    };
+    auto rows = [&](int r) __attribute__((always_inline)) { return group_rows(rgba8, width, height, u_base, v_base, r); };
     const __m512i r0 = rows(0), r1 = rows(1), r2 = rows(2), r3 = rows(3);
     const __m512i group8 = _mm512_setr_epi32(0, 0, 0, 0, 0, 0, 0, 0, 8, 8, 8, 8, 8, 8, 8, 8);
     // Row y of the window at column x: the permutes read index bits 0-4,
