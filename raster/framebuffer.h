@@ -55,9 +55,11 @@ struct Framebuffer {
         return glm::vec4(c[0], c[kGroupLanes], c[2 * kGroupLanes], c[3 * kGroupLanes]);
     }
 
-    // Rows [4 * block_row, 4 * block_row + 4) of texels() into `out` (sized
-    // for the whole image), block by block: a render target's copy from one
-    // pass to the next, one job per block row on the worker pool.
+    // The colour as RGBA texels, row 0 at the bottom (glReadPixels order),
+    // rows [4 * block_row, 4 * block_row + 4) of them into `out` (sized for
+    // the whole image), block by block: a render target's copy from one pass
+    // to the next, one job per block row on the worker pool. load_texels()
+    // is the way back.
     void texels_of_block_row(int block_row, float* out) const {
         const int y0 = block_row * kBlockSize;
         for (int bx = 0; bx < blocks_x; ++bx) {
@@ -73,18 +75,6 @@ struct Framebuffer {
         }
     }
 
-    // The colour as RGBA texels, row 0 at the bottom (glReadPixels order),
-    // and back: how a render target passes from one pass to the next.
-    std::vector<float> texels() const {
-        std::vector<float> out(size_t(width) * size_t(height) * 4);
-        for (int y = 0; y < height; ++y)
-            for (int x = 0; x < width; ++x) {
-                const glm::vec4 c = pixel(x, y);
-                float* o = &out[(size_t(y) * size_t(width) + size_t(x)) * 4];
-                o[0] = c.r, o[1] = c.g, o[2] = c.b, o[3] = c.a;
-            }
-        return out;
-    }
     void load_texels(const std::vector<float>& in) {
         for (int y = 0; y < height; ++y)
             for (int x = 0; x < width; ++x) {

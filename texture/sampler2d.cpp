@@ -103,11 +103,6 @@ void Sampler2D::load_texels(size_t texels, const std::vector<std::vector<float>>
     }
 }
 
-void Sampler2D::reload_texels() {
-    const size_t texels = size_t(level_base_.back()) + size_t(level_width_.back()) * size_t(level_height_.back());
-    load_texels(texels);
-}
-
 void Sampler2D::reload_texels(const std::vector<std::vector<float>>& levels) {
     const bool floats = tex_->format != TextureFormat::RGBA8 && tex_->format != TextureFormat::SRGB8_ALPHA8;
     if (!floats || levels.size() != level_width_.size())

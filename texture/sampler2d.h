@@ -87,12 +87,11 @@ public:
     glm::vec4 sample(const glm::vec2& st) const;
     glm::vec4 fetch(int x, int y) const;
 
-    // The texture's texels changed and nothing else did (a render target
-    // that a later pass samples, refreshed each frame): copies them in
-    // again, into the arrays the constructor made, without allocating;
-    // from the texture, or from `levels` (a float texture's levels, RGBA
-    // floats as the texture would hold them) without going through it.
-    void reload_texels();
+    // The texels of a float texture changed and nothing else did (a render
+    // target that a later pass samples, refreshed each frame): copies them
+    // in again from `levels` (its levels' RGBA floats, as the texture would
+    // hold them; not read from the texture), into the arrays the
+    // constructor made, without allocating.
     void reload_texels(const std::vector<std::vector<float>>& levels);
 
     const Texture& texture() const { return *tex_; }
