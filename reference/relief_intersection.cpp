@@ -1,6 +1,8 @@
 // relief_intersection.cpp: see relief_intersection.h.
 #include "reference/relief_intersection.h"
 
+#include "reference/texel_breakpoints.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,18 +15,10 @@ namespace {
 
 constexpr double kMaxBreakpoints = 1e7;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr const char* kWho = "ReliefHeightField::first_crossing";
 
-// REPEAT has period 1 in u and v on every level, so reducing the coordinate
-// first changes nothing but keeps x = u*w - 0.5 small and accurate.
-double reduce(double u) { return u - std::floor(u); }
-
-// A proper non-negative modulo of an integer-valued double: plain % on a
-// negative cell index would pick the wrong texel.
-int wrap_index(double i, int n) {
-    double r = std::fmod(i, double(n));
-    if (r < 0) r += n;
-    return int(r);
-}
+using breakpoints::reduce;
+using breakpoints::wrap_index;
 
 // c0 + c1 s + c2 s^2.
 struct Quadratic {
@@ -73,20 +67,6 @@ std::optional<double> first_nonpositive(const Quadratic& g, double len) {
     return std::nullopt;
 }
 
-// The t in (0, 1) where x(t) = x0 + t sx crosses an integer.
-void add_breakpoints(std::vector<double>& ts, double& budget, double x0, double sx) {
-    if (sx == 0) return;
-    const double lo = std::min(x0, x0 + sx), hi = std::max(x0, x0 + sx);
-    const double count = std::floor(hi) - std::ceil(lo) + 1;
-    budget -= std::max(count, 0.0);
-    if (!std::isfinite(sx) || !(budget >= 0))
-        throw std::invalid_argument("ReliefHeightField::first_crossing: the ray crosses more than 1e7 texel boundaries");
-    for (double k = std::ceil(lo); k <= hi; ++k) {
-        const double t = (k - x0) / sx;
-        if (t > 0 && t < 1) ts.push_back(t);
-    }
-}
-
 }  // namespace
 
 ReliefHeightField::ReliefHeightField(const Texture& t) {
@@ -113,6 +93,12 @@ ReliefHeightField::ReliefHeightField(const Texture& t) {
 void ReliefHeightField::check_level(int level) const {
     if (level < 0 || level >= levels())
         throw std::invalid_argument("ReliefHeightField: no such level");
+}
+
+double ReliefHeightField::texel(int level, int x, int y) const {
+    check_level(level);
+    const Level& L = levels_[size_t(level)];
+    return L.at(wrap_index(x, L.width), wrap_index(y, L.height));
 }
 
 double ReliefHeightField::height(int level, double u, double v) const {
@@ -162,8 +148,8 @@ ReliefHeightField::Crossing ReliefHeightField::first_crossing(int level0, int le
     std::vector<double> ts{0.0, 1.0};
     double budget = kMaxBreakpoints;
     for (const Term& term : terms) {
-        add_breakpoints(ts, budget, ur * term.level->width - 0.5, du * term.level->width);
-        add_breakpoints(ts, budget, vr * term.level->height - 0.5, dv * term.level->height);
+        breakpoints::add_integer_crossings(ts, budget, ur * term.level->width - 0.5, du * term.level->width, kWho);
+        breakpoints::add_integer_crossings(ts, budget, vr * term.level->height - 0.5, dv * term.level->height, kWho);
     }
     std::sort(ts.begin(), ts.end());
     ts.erase(std::unique(ts.begin(), ts.end()), ts.end());

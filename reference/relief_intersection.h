@@ -32,6 +32,10 @@ public:
     explicit ReliefHeightField(const Texture& t);
 
     int levels() const { return int(levels_.size()); }
+    int level_width(int level) const { check_level(level); return levels_[size_t(level)].width; }
+    int level_height(int level) const { check_level(level); return levels_[size_t(level)].height; }
+    // The stored height of texel (x, y) of a level, alpha / 255, wrapped (REPEAT).
+    double texel(int level, int x, int y) const;
 
     // Bilinear height of one level at (u, v), any finite u, v (REPEAT).
     // Throws std::invalid_argument for a bad level or non-finite u, v.

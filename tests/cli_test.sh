@@ -890,7 +890,8 @@ PY
 
   relief_quality)
     # quality: auto on relief scenes (issue 28, app/quality/relief_quality.h):
-    # the cheapest search within the budget of the most accurate setting.
+    # the cheapest search within the budget of the exact crossings of the
+    # height maps as the sampler reads them.
     # Small frames (CI time); a cache of its own, so every choice is measured.
     export SHADERTWIN_CACHE="$work/cache"
     small=(--set width=160 --set height=120)
@@ -944,6 +945,16 @@ PY
       fail "the report does not name the choice"
     # Normal mapping has nothing to choose.
     [ "$(q "$(auto relief-normal-mapping)" 'q["setting"]')" = "nothing to choose" ] || fail "normal mapping"
+    # The two-layer rows against their own exact image (every search of
+    # two_layer.frag replaced by the exact crossing): the most accurate
+    # search is near it (a broken yardstick is not), and within 4 steps a
+    # cheaper search holds.
+    j=$(auto relief-two-layer --set quality_budget=4)
+    q "$j" 'q["reference"]' | grep -q "exact crossings" || fail "two-layer: reference $(q "$j" 'q["reference"]')"
+    [ "$(q "$j" 'int(q["most_accurate"]["error"]["over_budget"] < 0.02)')" = 1 ] &&
+      [ "$(q "$j" 'q["within_budget"]')" = "True" ] && [ "$(q "$j" 'q["fields"]["linear_steps"]')" -lt 512 ] ||
+      fail "two-layer within 4 steps: $(q "$j" 'q["setting"]'), the most accurate $(q "$j" 'q["most_accurate"]')"
+    echo "ok   two-layer within 4 steps: $(q "$j" 'q["setting"]'), the most accurate $(q "$j" 'q["most_accurate"]["error"]["over_budget"]') over"
     ;;
 
   thin_slab_quality)

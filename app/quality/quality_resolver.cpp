@@ -71,7 +71,7 @@ nlohmann::json cached_or_measured(const std::string& name, const std::string& ke
 nlohmann::json resolve_relief_quality(int threads, const std::string& name, nlohmann::json& document) {
     static const ReliefSweepTwins twins;
     return cached_or_measured(
-        name, quality_choice_key("relief quality v2", document, relief_quality_budget(document)), document,
+        name, quality_choice_key("relief quality v3", document, relief_quality_budget(document)), document,
         [](const nlohmann::json& record, nlohmann::json& d) {
             const auto s = cached_setting(record);
             if (s) d = with_relief_setting(d, *s);

@@ -1,8 +1,21 @@
-// relief_exact.h: the relief sweep's yardstick as a twin (CPU only): the
-// relief-mapping program with its search replaced by the exact first
-// crossing (reference/relief_intersection.h), so that the image shaded at
-// the exact hit comes from the same shading code as every setting's. Kept
-// out of kernels/ so that the twins do not depend on the reference.
+// relief_exact.h: the relief yardsticks as twins (CPU only): the
+// relief programs with their searches replaced by exact first
+// crossings, so that the image shaded at that hit comes from the same
+// shading code as every setting's. Kept out of kernels/ so that the twins
+// do not depend on the reference.
+//
+// Two crossings, two questions:
+// - kSampledReliefMapping, the crossing of the surface the sampler returns
+//   (reference/relief_sampled_crossing.h): what every search converges to,
+//   so a setting's error against it is the search's own. `quality: auto`
+//   chooses against this one.
+// - kExactReliefMapping, the crossing of the bilinear surface in exact
+//   arithmetic (reference/relief_intersection.h): adds the error of the
+//   8-bit filter, which no search setting changes (the floor the sweep and
+//   auto's record show).
+// - kSampledTwoLayer, the two-layer program (two_layer.frag: the occlusion
+//   and absorption rows too) with every search, of the view, refracted,
+//   reflected and light rays, replaced by the sampled surface's crossing.
 #pragma once
 
 #include <memory>
@@ -12,11 +25,11 @@
 
 namespace st {
 
-// The built-in twins plus kExactReliefMapping, the relief_mapping program
-// with the exact intersection.
 class ReliefSweepTwins final : public TwinsWithFragment {
 public:
     static constexpr const char* kExactReliefMapping = "relief_mapping_exact";
+    static constexpr const char* kSampledReliefMapping = "relief_mapping_sampled_exact";
+    static constexpr const char* kSampledTwoLayer = "two_layer_sampled_exact";
 
     ReliefSweepTwins();
 };

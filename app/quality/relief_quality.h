@@ -2,16 +2,18 @@
 // cheapest search, reflections and light crossings whose image stays within
 // the error budget of the scene's reference (image_budget.h).
 //
-// The reference is the most accurate setting (512 linear and 16 binary
-// steps with the secant, searched reflections, 16 light crossings): the
-// search converged on the surface the sampler returns, so a candidate's
-// error is its own. Not the exact crossing (relief_exact.h): against it no
-// finite search keeps 99 % of the pixels within one step, the converged
-// one included (3.5 to 6.9 % of them further off from 30 to 85 degrees,
-// docs/relief-sweep/), since the search reads the 8-bit filtered height map
-// and the exact crossing the surface itself; for relief mapping the record
-// gives both the chosen and the most accurate setting's error against the
-// exact image, so that floor shows. Normal mapping has nothing to choose.
+// The reference is the scene with every search replaced by the exact first
+// crossing of the height map as the sampler reads it (relief_exact.h,
+// reference/relief_sampled_crossing.h): what every search converges to, so
+// that a candidate's error is its own, with the other knobs at their most
+// accurate (searched reflections, 16 light crossings). Not the crossing of
+// the bilinear surface in exact arithmetic (relief_intersection.h): the
+// 8-bit filter the shader reads through moves the surface by up to half a
+// step, and against that image no search keeps 99 % of the pixels within
+// one step, the most accurate included (4.2 % over on relief-mapping at 45
+// degrees), so no setting could be chosen by it; for relief mapping the
+// record gives the chosen and the most accurate setting's error against it,
+// so that floor shows. Normal mapping has nothing to choose.
 //
 // The choice, one knob at a time, each step checked against the reference
 // on the whole image:
@@ -28,8 +30,9 @@
 // 3. the fewest light crossings, 1, 2, 4 or 8, within the budget
 //    (occlusion and absorption).
 // Errors decide, never a timing, so a scene always resolves the same way.
-// When no search candidate meets the budget, the most accurate setting is
-// the answer, and the resolver says so in one line.
+// The most accurate setting (512 / 16 / secant) is the last candidate:
+// where only it meets the budget it is chosen; where not even it does, it
+// is used anyway, and the resolver says so in one line.
 #pragma once
 
 #include <string>
@@ -65,8 +68,9 @@ struct ReliefQualityChoice {
     int chosen = -1;                      // into tried; -1: the most accurate setting
     bool nothing_to_choose = false;       // normal mapping
     double chosen_ms = 0, most_accurate_ms = 0;  // median CPU frames
+    ObjectError most_accurate_error;              // the most accurate setting against the reference
     // Relief mapping: the chosen and the most accurate image against the
-    // image shaded at the exact crossing.
+    // image shaded at the bilinear surface's crossing (the 8-bit floor).
     bool have_exact = false;
     ObjectError exact_chosen, exact_most_accurate;
     ReliefSetting setting() const { return chosen < 0 ? ReliefSetting{} : tried[size_t(chosen)].setting; }

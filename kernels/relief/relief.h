@@ -14,16 +14,22 @@ namespace st {
 class Sampler2D;
 class SamplerCube;
 
-// A replacement for the relief search, for measuring only (the relief
-// sweep, app/quality/relief_exact.h): the first crossing of each lane's ray with
-// the height field, on the levels the search's reads would blend. bind()
-// is called from the program's bind, before any fragment.
+// A replacement for the relief searches, for measuring only (the relief
+// sweep and `quality: auto`, app/quality/relief_exact.h; GL never sees
+// it): the exact answer that relief::trace_segment approximates, per lane,
+// on the levels the search's reads would blend. bind() is called from the
+// program's bind, once for each height map the program searches.
 class ReliefIntersector {
 public:
     virtual ~ReliefIntersector() = default;
     virtual void bind(const Sampler2D& map) = 0;
-    virtual Float first_crossing(const Sampler2D& map, const Vec2& uv, const Vec2& offset, const Vec2& dx,
-                                 const Vec2& dy) const = 0;
+    // The first s in [0, 1] with side * (a + dh s) <= side * h(uv + offset s),
+    // h the map's alpha as textureGrad(map, ., dx, dy) reads it; `hit` where
+    // there is one, else s = 1. Lanes in `leaving` start at the crossing
+    // they leave, which does not count. Only the `active` lanes are traced.
+    virtual Float first_crossing(const Sampler2D& map, const Vec2& uv, const Vec2& offset, Float a, Float dh,
+                                 Float side, const Vec2& dx, const Vec2& dy, Mask leaving, Mask active,
+                                 Mask& hit) const = 0;
 };
 
 class ReliefVertex final : public VertexTwin {  // relief.vert
@@ -77,6 +83,9 @@ private:
 
 class TwoLayerFragment final : public FragmentProgram<TwoLayerFragment> {  // two_layer.frag
 public:
+    TwoLayerFragment() = default;
+    // With an intersector, its crossings replace every search (CPU only).
+    explicit TwoLayerFragment(std::shared_ptr<ReliefIntersector> exact) : exact_(std::move(exact)) {}
     void bind(const Bindings& b) override;
     uint32_t inputs_read() const override;
     Vec4 main(const Fragment& frag) const;
@@ -86,6 +95,9 @@ private:
     Vec3 light_occlusion(Exec& exec, const Vec2& uv, Float z, const Vec3& l, const Vec2& dx, const Vec2& dy) const;
     Vec3 shade_solid(Exec& exec, const Vec2& uv, const Vec3& pos, Float z, const Vec3& to_viewer, const Vec2& dx,
                      const Vec2& dy) const;
+    // relief::trace_segment, or the intersector's crossing in its place.
+    Float trace(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, Float a, Float dh, Float side,
+                const Vec2& dx, const Vec2& dy, bool secant, Mask& hit, Mask leaving = Mask(false)) const;
 
     ReliefLighting u_;
     const Sampler2D* liquid_map_ = nullptr;
@@ -102,6 +114,7 @@ private:
     bool planar_ = false;  // planar local reflections
     float plane_height_ = 0.5f;
     int ulp_perturbation_ = 0;  // the condition map's, CPU only (relief_search.h)
+    std::shared_ptr<ReliefIntersector> exact_;
 };
 
 }  // namespace st

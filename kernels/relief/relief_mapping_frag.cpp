@@ -43,7 +43,9 @@ Vec4 ReliefMappingFragment::main(const Fragment& frag) const {
                           ? simd::itrunc(Float(float(linear_steps_)) +
                                          (Float(float(min_linear_steps_)) - Float(float(linear_steps_))) * v.z)
                           : Int(linear_steps_);
-    const Float t = exact_ ? exact_->first_crossing(*u_.relief_map, uv, offset, dx, dy)
+    Mask crossed;  // always, on the floor
+    const Float t = exact_ ? exact_->first_crossing(*u_.relief_map, uv, offset, Float(1.0f), Float(-1.0f),
+                                                    Float(1.0f), dx, dy, Mask(false), frag.exec().active(), crossed)
                            : relief::trace_height_field(frag.exec(), *u_.relief_map, uv, offset, dx, dy, steps,
                                                         binary_steps_, secant_);
     const Vec2 hit_uv = uv + offset * t;

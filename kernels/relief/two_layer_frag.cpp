@@ -35,6 +35,16 @@ void TwoLayerFragment::bind(const Bindings& b) {
     half_distance_ = b.get_vec3("half_distance");
     liquid_specular_ = b.get_float("liquid_specular");
     intensify_ = b.get_int("intensify") != 0;
+    if (exact_) {
+        exact_->bind(*u_.relief_map);
+        exact_->bind(*liquid_map_);
+    }
+}
+
+Float TwoLayerFragment::trace(Exec& exec, const Sampler2D& map, const Vec2& uv, const Vec2& offset, Float a, Float dh,
+                              Float side, const Vec2& dx, const Vec2& dy, bool secant, Mask& hit, Mask leaving) const {
+    if (exact_) return exact_->first_crossing(map, uv, offset, a, dh, side, dx, dy, leaving, exec.active(), hit);
+    return relief::trace_segment(exec, map, uv, offset, a, dh, side, dx, dy, linear_steps_, binary_steps_, secant, hit);
 }
 
 uint32_t TwoLayerFragment::inputs_read() const { return reads(v_position, "xyz") | reads(v_uv, "xy"); }
@@ -50,8 +60,11 @@ Vec3 TwoLayerFragment::light_occlusion(Exec& exec, const Vec2& uv, Float z, cons
     const Float total = z / glsl::max(l.z, Float(1e-4f));
     const Vec2 offset = Vec2(l.x, l.y) * total;
     const Float a = glsl::min(Float(1.0f) - z / Float(depth_) + Float(shadow_bias_), Float(1.0f));
-    const Mask blocked =
-        relief::segment_blocked(exec, *u_.relief_map, uv, offset, a, Float(1.0f) - a, dx, dy, linear_steps_);
+    Mask blocked;
+    if (exact_)
+        trace(exec, *u_.relief_map, uv, offset, a, Float(1.0f) - a, Float(1.0f), dx, dy, false, blocked);
+    else
+        blocked = relief::segment_blocked(exec, *u_.relief_map, uv, offset, a, Float(1.0f) - a, dx, dy, linear_steps_);
     const Float a_liquid = Float(1.0f) - z / Float(liquid_depth_);
     Float side = glsl::select(a_liquid < liquid_map_->sample_grad(uv, dx, dy).w, Float(-1.0f), Float(1.0f));
     Float lit = 1.0f;
@@ -63,9 +76,8 @@ Vec3 TwoLayerFragment::light_occlusion(Exec& exec, const Vec2& uv, Float z, cons
         // 1 - a_liquid as NIR computes it (the GLSL says why).
         const Float start = a_liquid + (z / Float(liquid_depth_)) * s0;
         Mask crossed;
-        const Float s = relief::trace_segment(exec, *liquid_map_, uv + offset * s0, offset * (Float(1.0f) - s0), start,
-                                              Float(1.0f) - start, side, dx, dy, linear_steps_, binary_steps_, false,
-                                              crossed);
+        const Float s = trace(exec, *liquid_map_, uv + offset * s0, offset * (Float(1.0f) - s0), start,
+                              Float(1.0f) - start, side, dx, dy, false, crossed, i > Int(0));
         loop.break_if(!crossed);
         const Float step = (Float(1.0f) - s0) * s;
         const Float s_at = s0 + step;
@@ -105,11 +117,12 @@ Vec4 TwoLayerFragment::main(const Fragment& frag) const {
     const Vec2 dx = dFdx(uv);
     const Vec2 dy = dFdy(uv);
     const Vec2 minus_v_xy(-v.x, -v.y);
-    const Float t_solid = relief::trace_height_field(exec, *u_.relief_map, uv, minus_v_xy * (Float(depth_) / v.z),
-                                                     dx, dy, linear_steps_, binary_steps_, secant_);
-    const Float t_liquid = relief::trace_height_field(exec, *liquid_map_, uv,
-                                                      minus_v_xy * (Float(liquid_depth_) / v.z), dx, dy,
-                                                      linear_steps_, binary_steps_, secant_);
+    // trace_height_field: a = 1, dh = -1, side +1.
+    Mask solid_hit, liquid_hit;
+    const Float t_solid = trace(exec, *u_.relief_map, uv, minus_v_xy * (Float(depth_) / v.z), Float(1.0f),
+                                Float(-1.0f), Float(1.0f), dx, dy, secant_, solid_hit);
+    const Float t_liquid = trace(exec, *liquid_map_, uv, minus_v_xy * (Float(liquid_depth_) / v.z), Float(1.0f),
+                                 Float(-1.0f), Float(1.0f), dx, dy, secant_, liquid_hit);
     const Float z_solid = t_solid * Float(depth_);
     const Float z_liquid = t_liquid * Float(liquid_depth_);
     const Vec2 v_xy(v.x, v.y);
@@ -138,9 +151,8 @@ Vec4 TwoLayerFragment::main(const Fragment& frag) const {
             // A uniform branch: the same value on every lane, as the GLSL's if.
             const Float plane(plane_height_);
             const Float s = planar_ ? glsl::select(a > plane, (a - plane) / a, Float(0.0f))
-                                    : relief::trace_segment(exec, *u_.relief_map, at_uv, down_offset, a, -a,
-                                                            Float(1.0f), dx, dy, linear_steps_, binary_steps_, secant_,
-                                                            hit);
+                                    : trace(exec, *u_.relief_map, at_uv, down_offset, a, -a, Float(1.0f), dx, dy,
+                                            secant_, hit);
             const Float refracted_length = s * down;
             const Vec3 refraction =
                 shade_solid(exec, at_uv + down_offset * s, at + refracted * (refracted_length * Float(world_per_uv_)),
@@ -154,8 +166,8 @@ Vec4 TwoLayerFragment::main(const Fragment& frag) const {
                 hit = a < plane;
                 s_up = glsl::select(hit, (plane - a) / (z_liquid / Float(depth_)), Float(1.0f));
             } else {
-                s_up = relief::trace_segment(exec, *u_.relief_map, at_uv, up_offset, a, z_liquid / Float(depth_), Float(1.0f),
-                                             dx, dy, linear_steps_, binary_steps_, secant_, hit);
+                s_up = trace(exec, *u_.relief_map, at_uv, up_offset, a, z_liquid / Float(depth_), Float(1.0f), dx, dy,
+                             secant_, hit);
             }
             const Vec3 local = shade_solid(exec, at_uv + up_offset * s_up,
                                            at + reflected * (s_up * up * Float(world_per_uv_)), z_liquid - z_liquid * s_up,
