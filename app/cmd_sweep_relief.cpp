@@ -118,13 +118,12 @@ ImageError image_error(const Image& a, const Image& b, const Image& ref_hits) {
     return e;
 }
 
+// Every search setting quality: auto may choose for relief mapping: the
+// sweep measures the frame times that order them (measured_costs.h).
 std::vector<Setting> settings() {
     std::vector<Setting> out;
-    for (int secant : {0, 1})
-        for (int linear : {4, 8, 16, 32, 64, 128})
-            for (int binary : {0, 2, 4, 6, 8, 10}) out.push_back(Setting{linear, 0, binary, secant != 0});
-    for (auto [hi, lo] : {std::pair{32, 8}, std::pair{64, 8}, std::pair{64, 16}, std::pair{128, 16}})
-        for (int binary : {4, 6}) out.push_back(Setting{hi, lo, binary, true});
+    for (const ReliefSetting& r : relief_search_settings("relief"))
+        out.push_back(Setting{r.linear_steps, r.min_linear_steps, r.binary_steps, r.secant});
     return out;
 }
 
@@ -185,7 +184,7 @@ void measure_hits(Result& r, const Image& hits, const Image& ref_hits, int map_s
 int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions& common) {
     // Steep to grazing; past about 65 degrees at this field of view the
     // surface ends at a horizon (the clear pixels are not counted).
-    const std::vector<double> angles = {30, 60, 75, 85};
+    const std::vector<double> angles = {30, 45, 60, 75, 85};
     const std::vector<Setting> all = settings();
     Backends backends(common.threads, common.gl_platform, glsl_roots());
     const ReliefSweepTwins sweep_twins;
@@ -250,24 +249,10 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
         write_png_bytes(stem + "-converged-heat.png", ref_image.width, ref_image.height, 3, heat.data());
         const ImageError floor = image_error(ref_image, bilinear_image, ref_hits);
 
-        // The setting quality: auto takes at this angle (budget 1), among
-        // the sweep's when it is one of them, else measured beside them.
-        nlohmann::json auto_document = scene.document;
-        auto_document["quality"] = "auto";
-        const ReliefQualityChoice auto_choice =
-            measure_relief_quality(sweep_twins, common.threads, scene.name, auto_document, 1);
-        const ReliefSetting chosen = auto_choice.setting();
-        const Setting auto_setting{chosen.linear_steps, chosen.min_linear_steps, chosen.binary_steps, chosen.secant};
-        std::vector<Setting> tried = all;
-        const auto same = [&](const Setting& t) {
-            return t.linear == auto_setting.linear && t.min_linear == auto_setting.min_linear &&
-                   t.binary == auto_setting.binary && t.secant == auto_setting.secant;
-        };
-        if (std::none_of(tried.begin(), tried.end(), same)) tried.push_back(auto_setting);
-        std::vector<Result> results(tried.size());
-        for (size_t i = 0; i < tried.size(); ++i) {
-            results[i].setting = tried[i];
-            const Frame f = with_setting(scene.frame, tried[i]);
+        std::vector<Result> results(all.size());
+        for (size_t i = 0; i < all.size(); ++i) {
+            results[i].setting = all[i];
+            const Frame f = with_setting(scene.frame, all[i]);
             const Rendered first = backends.render(Backend::Cpu, f);
             results[i].ms.push_back(first.ms);
             measure_hits(results[i], backends.render(Backend::Cpu, hit_frame(f)).image, ref_hits, map_size);
@@ -277,9 +262,24 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
         // The remaining rounds time every setting once each, so that the
         // machine's drift falls on all of them alike.
         for (int round = 1; round < frames; ++round)
-            for (size_t i = 0; i < tried.size(); ++i)
-                results[i].ms.push_back(backends.render(Backend::Cpu, with_setting(scene.frame, tried[i])).ms);
+            for (size_t i = 0; i < all.size(); ++i)
+                results[i].ms.push_back(backends.render(Backend::Cpu, with_setting(scene.frame, all[i])).ms);
         for (Result& r : results) r.median_ms = quantile(r.ms, 0.5);
+
+        // The setting quality: auto takes at this angle (budget 1), its
+        // candidates ordered by the times just measured.
+        const auto same = [](const Setting& t, const ReliefSetting& s) {
+            return t.linear == s.linear_steps && t.min_linear == s.min_linear_steps && t.binary == s.binary_steps &&
+                   t.secant == s.secant;
+        };
+        nlohmann::json auto_document = scene.document;
+        auto_document["quality"] = "auto";
+        const ReliefQualityChoice auto_choice = measure_relief_quality(
+            sweep_twins, common.threads, scene.name, auto_document, 1, [&](const ReliefSetting& s, double) {
+                for (const Result& r : results)
+                    if (same(r.setting, s)) return r.median_ms;
+                throw std::logic_error("sweep relief: auto's candidate " + s.label() + " was not timed");
+            });
         for (Result& r : results) {
             r.undominated = std::none_of(results.begin(), results.end(), [&](const Result& o) {
                 return o.median_ms <= r.median_ms && o.image.rms <= r.image.rms &&
@@ -297,7 +297,7 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
         md << "\n## View angle " << short_number(angle) << " degrees\n\n";
         const Result* auto_result = nullptr;
         for (const Result& r : results)
-            if (same(r.setting)) auto_result = &r;
+            if (same(r.setting, auto_choice.setting())) auto_result = &r;
         md << "`quality: auto` takes " << (auto_choice.chosen < 0 ? "(none within the budget: the most accurate) " : "")
            << named(auto_result)
            << " (the cheapest within one step for 99 % of the object against the exact crossing, measured at its "

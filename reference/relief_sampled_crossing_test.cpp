@@ -13,7 +13,7 @@
 
 #include "texture/sampler2d.h"
 
-namespace st::reference {
+namespace st::reference::sampled_crossing_test {
 namespace {
 
 // An RGBA8 REPEAT trilinear texture whose alpha is `alpha`, with a mip chain
@@ -280,4 +280,4 @@ TEST(ReliefSampledCrossing, RefusesBadInput) {
 }
 
 }  // namespace
-}  // namespace st::reference
+}  // namespace st::reference::sampled_crossing_test

@@ -12,6 +12,7 @@
 #include "app/backends.h"
 #include "app/commands.h"
 #include "app/quality/profile_quality.h"
+#include "app/quality/measured_costs.h"
 #include "app/quality/relief_exact.h"
 #include "app/quality/relief_quality.h"
 #include "app/quality/thin_slab_exact.h"
@@ -71,7 +72,7 @@ nlohmann::json cached_or_measured(const std::string& name, const std::string& ke
 nlohmann::json resolve_relief_quality(int threads, const std::string& name, nlohmann::json& document) {
     static const ReliefSweepTwins twins;
     return cached_or_measured(
-        name, quality_choice_key("relief quality v3", document, relief_quality_budget(document)), document,
+        name, quality_choice_key("relief quality v3 costs " + measured_costs::fingerprint(), document, relief_quality_budget(document)), document,
         [](const nlohmann::json& record, nlohmann::json& d) {
             const auto s = cached_setting(record);
             if (s) d = with_relief_setting(d, *s);
@@ -83,7 +84,7 @@ nlohmann::json resolve_relief_quality(int threads, const std::string& name, nloh
 nlohmann::json resolve_thin_slab_quality(int threads, const std::string& name, nlohmann::json& document) {
     static const ThinSlabExactTwins twins;
     return cached_or_measured(
-        name, quality_choice_key("thin-slab quality v2", document, thin_slab_quality_budget(document)), document,
+        name, quality_choice_key("thin-slab quality v3 costs " + measured_costs::fingerprint(), document, thin_slab_quality_budget(document)), document,
         [](const nlohmann::json& record, nlohmann::json& d) {
             if (!record.is_object() || !record.contains("fields") || !record["fields"].is_object() ||
                 !record["fields"].contains("variant") || !record["fields"]["variant"].is_string())

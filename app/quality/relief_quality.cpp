@@ -3,10 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <sstream>
 #include <tuple>
 
+#include "app/quality/measured_costs.h"
 #include "app/quality/relief_exact.h"
 #include "raster/cpu_renderer.h"
 #include "scene/input_error.h"
@@ -24,44 +24,19 @@ bool is_one_of(const std::string& s, const std::vector<std::string>& set) {
 
 // The search candidates: every count of linear and binary steps (with and
 // without the secant step), and for relief mapping the counts scaled by
-// the view angle that `sweep relief` measures.
+// the view angle.
 constexpr int kLinearSteps[] = {1, 2, 4, 8, 16, 32, 64, 128, 256};
 constexpr int kBinarySteps[] = {0, 1, 2, 4, 6, 8, 12};
 constexpr std::pair<int, int> kScaled[] = {{32, 8}, {64, 8}, {64, 16}, {128, 16}};
 constexpr int kCrossings[] = {1, 2, 4, 8};  // tried fewest first; 16 is the most accurate setting's
 
-// The shader's step count at the scene's view angle (relief_mapping.frag:
-// mix(linear_steps, min_linear_steps, N.V), truncated).
-int steps_at(const ReliefSetting& s, double angle_deg) {
-    if (s.min_linear_steps <= 0) return s.linear_steps;
-    const double cos_view = std::cos(angle_deg * std::numbers::pi / 180.0);
-    return int(double(s.linear_steps) + (double(s.min_linear_steps) - double(s.linear_steps)) * cos_view);
-}
-
-double cost_units(const ReliefSetting& s, double angle_deg) { return steps_at(s, angle_deg) + 2.0 * s.binary_steps; }
-
-std::vector<ReliefCandidate> search_candidates(const std::string& technique, double angle_deg) {
+// In the cost order: cheapest first by `cost`; at equal cost the secant
+// step first (it costs nothing measurable and is more accurate), then fewer
+// binary steps, then a fixed count before a scaled one: a total order, so
+// the choice is one.
+std::vector<ReliefCandidate> search_candidates(const std::string& technique, double angle_deg, const ReliefCost& cost) {
     std::vector<ReliefCandidate> out;
-    for (int linear : kLinearSteps)
-        for (int binary : kBinarySteps)
-            for (bool secant : {true, false}) {
-                ReliefCandidate c;
-                c.setting.linear_steps = linear, c.setting.binary_steps = binary, c.setting.secant = secant;
-                out.push_back(c);
-            }
-    if (technique == "relief")
-        for (auto [hi, lo] : kScaled)
-            for (int binary : {4, 6}) {
-                ReliefCandidate c;
-                c.setting.linear_steps = hi, c.setting.min_linear_steps = lo, c.setting.binary_steps = binary;
-                out.push_back(c);
-            }
-    // The most accurate setting last: chosen when it alone is within.
-    out.push_back(ReliefCandidate{ReliefSetting{}, 0, {}});
-    for (ReliefCandidate& c : out) c.cost = cost_units(c.setting, angle_deg);
-    // Cheapest first; at equal cost the secant step first (it costs
-    // nothing and is more accurate), then fewer binary steps, then a fixed
-    // count before a scaled one: a total order, so the choice is one.
+    for (const ReliefSetting& s : relief_search_settings(technique)) out.push_back(ReliefCandidate{s, cost(s, angle_deg), {}});
     std::stable_sort(out.begin(), out.end(), [](const ReliefCandidate& a, const ReliefCandidate& b) {
         const ReliefSetting &p = a.setting, &q = b.setting;
         return std::make_tuple(a.cost, !p.secant, p.binary_steps, p.min_linear_steps, p.linear_steps) <
@@ -70,8 +45,27 @@ std::vector<ReliefCandidate> search_candidates(const std::string& technique, dou
     return out;
 }
 
-
 }  // namespace
+
+std::vector<ReliefSetting> relief_search_settings(const std::string& technique) {
+    std::vector<ReliefSetting> out;
+    for (int linear : kLinearSteps)
+        for (int binary : kBinarySteps)
+            for (bool secant : {true, false}) {
+                ReliefSetting s;
+                s.linear_steps = linear, s.binary_steps = binary, s.secant = secant;
+                out.push_back(s);
+            }
+    if (technique == "relief")
+        for (auto [hi, lo] : kScaled)
+            for (int binary : {4, 6}) {
+                ReliefSetting s;
+                s.linear_steps = hi, s.min_linear_steps = lo, s.binary_steps = binary;
+                out.push_back(s);
+            }
+    out.push_back(ReliefSetting{});  // the most accurate, last
+    return out;
+}
 
 std::string ReliefSetting::label() const {
     std::ostringstream s;
@@ -107,7 +101,7 @@ nlohmann::json with_relief_setting(const nlohmann::json& document, const ReliefS
 }
 
 ReliefQualityChoice measure_relief_quality(const TwinLibrary& twins, int threads, const std::string& name,
-                                           const nlohmann::json& document, int frames) {
+                                           const nlohmann::json& document, int frames, const ReliefCost& cost) {
     ReliefQualityChoice choice;
     choice.scene = name;
     choice.budget = relief_quality_budget(document);
@@ -122,6 +116,7 @@ ReliefQualityChoice measure_relief_quality(const TwinLibrary& twins, int threads
         document["view"]["angle_deg"].is_number())
         angle = document["view"]["angle_deg"].get<double>();
 
+    choice.angle_deg = angle;
     CpuRenderer renderer(threads, twins);
     const Scene most_accurate = load_scene_document(name, with_relief_setting(document, ReliefSetting{}), "");
     const Image most_accurate_image = renderer.render(most_accurate.frame);
@@ -147,7 +142,7 @@ ReliefQualityChoice measure_relief_quality(const TwinLibrary& twins, int threads
         return c.error.within();
     };
     // 1. The search, the other knobs at their most accurate.
-    for (const ReliefCandidate& c : search_candidates(choice.technique, angle))
+    for (const ReliefCandidate& c : search_candidates(choice.technique, angle, cost))
         if (try_setting(c)) {
             choice.chosen = int(choice.tried.size()) - 1;
             break;
@@ -217,6 +212,9 @@ nlohmann::json relief_choice_record(const ReliefQualityChoice& choice) {
     if (choice.have_exact)
         r["vs_bilinear"] = {{"chosen", error(choice.exact_chosen)}, {"most_accurate", error(choice.exact_most_accurate)}};
     r["candidates_tried"] = choice.tried.size();
+    r["order"] = "sweep relief's frame times at " + std::to_string(int(std::lround(choice.angle_deg))) +
+                 " degrees (docs/relief-sweep/)";
+    if (choice.chosen >= 0) r["sweep_ms"] = choice.tried[size_t(choice.chosen)].cost;
     r["cpu_ms"] = choice.chosen_ms;
     r["most_accurate_cpu_ms"] = choice.most_accurate_ms;
     return r;

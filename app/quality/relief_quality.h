@@ -17,14 +17,11 @@
 //
 // The choice, one knob at a time, each step checked against the reference
 // on the whole image:
-// 1. the search: candidates in a fixed cost order, the first within the
-//    budget wins, the other knobs at their most accurate. Cost units: one
-//    per linear step (for a count scaled by the view angle, the count at the
-//    scene's angle), two per binary step, none for the secant step; fitted
-//    to `sweep relief`'s frame times (docs/relief-sweep/relief-sweep.csv:
-//    a binary step costs 1.6 to 2.7 linear steps from 30 to 85 degrees,
-//    the secant step nothing measurable), so the order is the measured one
-//    and the same on every machine;
+// 1. the search: candidates (relief_search_settings) cheapest first, the
+//    first within the budget wins, the other knobs at their most accurate.
+//    Cheapest by the frame time `sweep relief` measured for the setting at
+//    the scene's view angle (measured_costs.h: relief mapping's scene, for
+//    every row), so the order is measured, and the same on every machine;
 // 2. planar reflections (two-layer rows) when they keep the image within
 //    the budget (1.4 times faster than searched ones on Table 1's scene);
 // 3. the fewest light crossings, 1, 2, 4 or 8, within the budget
@@ -35,12 +32,14 @@
 // is used anyway, and the resolver says so in one line.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "app/quality/image_budget.h"
+#include "app/quality/measured_costs.h"
 
 namespace st {
 
@@ -56,13 +55,21 @@ struct ReliefSetting {
 
 struct ReliefCandidate {
     ReliefSetting setting;
-    double cost = 0;  // cost units (above)
+    double cost = 0;  // ms, measured (above)
     ObjectError error;
 };
+
+// Every search setting auto may choose for a row (`technique`), the most
+// accurate (ReliefSetting{}) last; `sweep relief` times them all.
+std::vector<ReliefSetting> relief_search_settings(const std::string& technique);
+
+// What orders the search candidates: a setting's frame time at a view angle.
+using ReliefCost = std::function<double(const ReliefSetting&, double angle_deg)>;
 
 struct ReliefQualityChoice {
     std::string scene, technique;
     double budget = kDefaultQualityBudget;
+    double angle_deg = 45;                // the view angle the costs were read at
     std::string reference;                // what the candidates were measured against
     std::vector<ReliefCandidate> tried;   // in the order tried
     int chosen = -1;                      // into tried; -1: the most accurate setting
@@ -82,9 +89,11 @@ double relief_quality_budget(const nlohmann::json& document);
 // Renders a relief scene's candidates on the CPU with `twins` (which must
 // hold ReliefSweepTwins' exact program, for the record's comparison with
 // the exact image), `frames` timed frames for the chosen and the most
-// accurate setting.
-ReliefQualityChoice measure_relief_quality(const TwinLibrary& twins, int threads, const std::string& name,
-                                           const nlohmann::json& document, int frames);
+// accurate setting; `cost` orders the candidates (the sweep passes the times
+// it has just measured).
+ReliefQualityChoice measure_relief_quality(
+    const TwinLibrary& twins, int threads, const std::string& name, const nlohmann::json& document, int frames,
+    const ReliefCost& cost = [](const ReliefSetting& s, double angle) { return measured_costs::relief_search_ms(s, angle); });
 
 // The document with the setting written in and no "quality" fields.
 nlohmann::json with_relief_setting(const nlohmann::json& document, const ReliefSetting& setting);

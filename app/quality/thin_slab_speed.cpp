@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "app/median.h"
 #include "app/quality/image_budget.h"
+#include "app/quality/measured_costs.h"
 #include "app/quality/thin_slab_exact.h"
 #include "app/quality/thin_slab_quality.h"
 #include "app/short_number.h"
@@ -80,15 +81,20 @@ std::string thin_slab_speed_accuracy(const std::string& out_dir, int frames, con
           "takes at that mesh (budget 1).\n\n"
           "| light | mesh (quads) | variant | CPU ms | RMS (8-bit) | pixels > 1 step | |\n| --- | --- | --- | --- | --- | --- | --- |\n";
     csv << "light,columns,rows,variant,cpu_ms_median,rms_8bit,pixels_over_1lsb,undominated,auto\n";
+    // Every path's times first, so that auto's choice at each mesh is made
+    // in the order the build will read from this CSV (measured_costs.h:
+    // the nearest mesh, averaged over the paths).
+    std::vector<std::vector<Row>> all_rows;
+    std::vector<measured_costs::ThinSlabRow> timed;
+    std::vector<std::pair<std::string, nlohmann::json>> auto_documents;  // per (path, mesh), in order
     for (const LightPath& path : kPaths) {
-        std::vector<Row> rows;
+        std::vector<Row>& rows = all_rows.emplace_back();
         for (auto [columns, quad_rows] : kMeshes) {
             std::vector<std::string> overrides = common.overrides;
             for (const std::string& o : path.overrides) overrides.push_back(o);
             overrides.push_back("flag.columns=" + std::to_string(columns));
             overrides.push_back("flag.rows=" + std::to_string(quad_rows));
             const Scene base = load_scene(path.scene, overrides);
-            // The exact image, and the variant quality: auto takes here.
             CpuRenderer exact_renderer(common.threads, twins);
             Frame exact = base.frame;
             for (Pass& pass : exact.passes)
@@ -97,8 +103,7 @@ std::string thin_slab_speed_accuracy(const std::string& out_dir, int frames, con
             const Image reference = exact_renderer.render(exact);
             nlohmann::json document = base.document;
             document["quality"] = "auto";
-            const std::string chosen =
-                measure_thin_slab_quality(twins, common.threads, base.name, document, 1).variant();
+            auto_documents.emplace_back(base.name, document);
             // Every variant prepared once, then timed in interleaved rounds.
             std::vector<std::unique_ptr<CpuRenderer>> renderers;
             std::vector<std::vector<double>> ms(std::size(kAllVariants));
@@ -108,7 +113,6 @@ std::string thin_slab_speed_accuracy(const std::string& out_dir, int frames, con
                 Row row;
                 row.path = path.name, row.variant = variant, row.columns = columns, row.rows = quad_rows;
                 std::tie(row.rms, row.over_1) = image_rms(r->render(s.frame), reference);
-                row.auto_choice = chosen == variant;
                 rows.push_back(row);
             }
             for (int round = 0; round < frames; ++round)
@@ -117,9 +121,30 @@ std::string thin_slab_speed_accuracy(const std::string& out_dir, int frames, con
                     renderers[v]->execute();
                     ms[v].push_back(ms_between(t0, Clock::now()));
                 }
-            for (size_t v = 0; v < renderers.size(); ++v)
-                rows[rows.size() - renderers.size() + v].median_ms = median(ms[v]);
+            for (size_t v = 0; v < renderers.size(); ++v) {
+                Row& row = rows[rows.size() - renderers.size() + v];
+                row.median_ms = median(ms[v]);
+                timed.push_back({row.path, row.columns, row.rows, row.variant, row.median_ms});
+            }
         }
+    }
+    // The variant quality: auto takes at each mesh, ordered by these times.
+    size_t next_auto = 0;
+    for (std::vector<Row>& rows : all_rows)
+        for (size_t m = 0; m < std::size(kMeshes); ++m) {
+            const auto& [name, document] = auto_documents[next_auto++];
+            const std::string chosen =
+                measure_thin_slab_quality(twins, common.threads, name, document, 1, [&](const std::string& v, int quads) {
+                    return measured_costs::thin_slab_variant_ms(timed, v, double(quads));
+                }).variant();
+            for (size_t v = 0; v < std::size(kAllVariants); ++v) {
+                Row& row = rows[m * std::size(kAllVariants) + v];
+                row.auto_choice = chosen == row.variant;
+            }
+        }
+    for (size_t p = 0; p < std::size(kPaths); ++p) {
+        const LightPath& path = kPaths[p];
+        std::vector<Row>& rows = all_rows[p];
         for (Row& r : rows)
             r.undominated = std::none_of(rows.begin(), rows.end(), [&](const Row& o) {
                 return o.median_ms <= r.median_ms && o.rms <= r.rms && (o.median_ms < r.median_ms || o.rms < r.rms);
