@@ -11,51 +11,14 @@
 
 #include <gtest/gtest.h>
 
+#include "reference/height_texture_for_tests.h"
 #include "texture/sampler2d.h"
 
 namespace st::reference::sampled_crossing_test {
 namespace {
 
-// An RGBA8 REPEAT trilinear texture whose alpha is `alpha`, with a mip chain
-// whose every texel is the rounded box average of four.
-Texture height_texture(int w, int h, const std::vector<uint8_t>& alpha) {
-    Texture t;
-    t.format = TextureFormat::RGBA8;
-    t.set_wrap(TextureWrap::Repeat);
-    t.set_filter(TextureFilter::Linear);
-    t.mip_filter = MipFilter::Linear;
-    t.width = w;
-    t.height = h;
-    const auto rgba = [](const std::vector<uint8_t>& a) {
-        std::vector<uint8_t> texels(a.size() * 4, 0);
-        for (size_t i = 0; i < a.size(); ++i) texels[i * 4 + 3] = a[i];
-        return texels;
-    };
-    t.texels8 = rgba(alpha);
-    std::vector<uint8_t> level = alpha;
-    while (w > 1 && h > 1) {
-        const int nw = w / 2, nh = h / 2;
-        std::vector<uint8_t> next(size_t(nw) * nh);
-        for (int y = 0; y < nh; ++y)
-            for (int x = 0; x < nw; ++x) {
-                const int sum = level[size_t(2 * y) * w + 2 * x] + level[size_t(2 * y) * w + 2 * x + 1] +
-                                level[size_t(2 * y + 1) * w + 2 * x] + level[size_t(2 * y + 1) * w + 2 * x + 1];
-                next[size_t(y) * nw + x] = uint8_t((sum + 2) / 4);
-            }
-        t.mips.push_back(TextureLevel{nw, nh, rgba(next), {}});
-        level = std::move(next);
-        w = nw;
-        h = nh;
-    }
-    return t;
-}
-
-struct Rng {
-    std::mt19937_64 gen;
-    explicit Rng(uint64_t seed) : gen(seed) {}
-    double uniform(double a, double b) { return a + (b - a) * double(gen() >> 11) * 0x1p-53; }
-    int below(int n) { return int(gen() % uint64_t(n)); }
-};
+using testing_maps::height_texture;
+using testing_maps::Rng;
 
 // The sampler's height read at one level pair and weight, every lane alike.
 struct Reader {
