@@ -292,7 +292,7 @@ for t in ("relief", "triangles", "conformance"):
     assert 'id="t-%s"' % t in tech, t
 t_relief = tech[tech.index('id="t-relief"'):]
 t_relief = t_relief[:t_relief.index("</section>")]
-assert t_relief.count('class="chart"') == 4 and "undominated" in t_relief, "relief's four sweep charts"
+assert t_relief.count('class="chart"') == 5 and "undominated" in t_relief, "relief's five sweep charts (one an angle)"
 junit = ET.parse(sys.argv[3]).getroot()
 assert junit.get("failures") == "0" and int(junit.get("tests")) >= len(rows)
 print("ok   report page: %d scenes, %d of %d images loaded, no console message" % (len(rows), loaded, total))

@@ -65,7 +65,7 @@ rm "$prefix/share/shadertwin/sweeps/relief/relief-sweep-85deg.svg"  # so the pre
   fail "wraptwin report"
 grep -q 'id="t-wrap"' "$work/report/index.html" && grep -q 'id="t-relief"' "$work/report/index.html" ||
   fail "the report has no part for the user's technique or the built-in one"
-[ "$(ls "$work/report/charts/" | grep -c '^relief-.*\.svg$')" -eq 3 ] || fail "the report did not take the sweep charts from the prefix"
+[ "$(ls "$work/report/charts/" | grep -c '^relief-.*\.svg$')" -eq 4 ] || fail "the report did not take the sweep charts from the prefix"
 echo "ok   wraptwin render (EGL), bench and report"
 # Its goldens live in its own file, the built-in ones in the prefix.
 "$tool" golden check wrap-sphere-front wrap-sphere-back thin-slab-fragment-backlit >"$work/golden.txt" ||
