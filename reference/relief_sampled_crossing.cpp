@@ -14,6 +14,10 @@ namespace {
 
 constexpr const char* kWho = "first_sampled_crossing";
 constexpr double kMaxBreakpoints = 1e7;
+// A ray that stays within its texels' range for thousands of texels (a view
+// along the surface) would read steps without end: past this many it is
+// refused like a ray with too many texel edges.
+constexpr long kMaxStepsRead = 2000000;
 // The sampler's texel is (round(256 x) - 128) >> 8: it changes where x
 // crosses k + 127.5/256.
 constexpr double kTexelEdge = 127.5 / 256;
@@ -102,6 +106,8 @@ SampledCrossing first_sampled_crossing(const ReliefHeightField& field, const std
     const auto read_pending = [&] {
         heights(u.data(), v.data(), pending, read.data());
         out.steps_read += pending;
+        if (out.steps_read > kMaxStepsRead)
+            throw std::invalid_argument(std::string(kWho) + ": the ray reads more than 2e6 steps of the staircase");
         for (int i = 0; i < pending; ++i)
             if (meet(step_lo[size_t(i)], step_hi[size_t(i)], double(read[size_t(i)]), &out.t)) {
                 out.hit = true;

@@ -57,8 +57,8 @@ struct SampledCrossing {
 // The first crossing of `ray` with the staircase of `levels` (the one or
 // two levels the read blends) of `field`, heights read through `heights`
 // in batches of `batch`. Throws std::invalid_argument for non-finite input,
-// a side other than +-1, no or bad levels, a batch under 1, or a ray
-// crossing more than 1e7 texel boundaries.
+// a side other than +-1, no or bad levels, a batch under 1, a ray crossing
+// more than 1e7 texel boundaries, or one that reads more than 2e6 steps.
 SampledCrossing first_sampled_crossing(const ReliefHeightField& field, const std::vector<int>& levels,
                                        const SearchRay& ray, const SampledHeights& heights, int batch);
 

@@ -240,6 +240,15 @@ TEST(ReliefSampledCrossing, RefusesBadInput) {
     SearchRay far = ok;
     far.du = 1e9;
     EXPECT_THROW(first_sampled_crossing(field, {0}, far, read, 4), std::invalid_argument);
+    // Along the surface, within its rounding of it, for 16 000 texels: every
+    // step would be read (4e6 of them).
+    SearchRay along = ok;
+    along.du = 4000, along.dv = 0, along.dh = 0, along.a = double(read.at(0.5, 0.5)) + 5e-7;
+    EXPECT_THROW(first_sampled_crossing(field, {0}, along, read, 4), std::invalid_argument);
+    along.du = 1;  // 4 texels: read, and no crossing
+    const SampledCrossing short_along = first_sampled_crossing(field, {0}, along, read, 4);
+    EXPECT_FALSE(short_along.hit);
+    EXPECT_GT(short_along.steps_read, 1000);
 }
 
 }  // namespace

@@ -21,8 +21,8 @@ namespace {
 // the search's error (and, on the bilinear surface, the 8-bit filter's
 // rounding of the surface). Inactive lanes and lanes with a non-finite ray
 // (helper lanes outside the triangle) keep s = 1 and no hit, as does a ray
-// too long to trace (over 1e7 texel edges: a view within ~1e-4 of the
-// tangent plane), which the reference throws for.
+// too long to trace (over 1e7 texel edges, or 2e6 steps of the staircase
+// read: a view along the surface), which the reference throws for.
 class ExactReliefIntersector final : public ReliefIntersector {
 public:
     enum class Surface { Bilinear, Sampled };
