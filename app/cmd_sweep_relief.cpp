@@ -28,6 +28,7 @@
 #include "app/backends.h"
 #include "app/commands.h"
 #include "app/quality/image_budget.h"
+#include "app/quality/measured_costs.h"
 #include "app/quality/relief_exact.h"
 #include "app/quality/relief_quality.h"
 #include "app/short_number.h"
@@ -240,6 +241,8 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
         const Image ref_image = exact_renderer.render(exact);
         const Image ref_hits = exact_renderer.render(hit_frame(exact));
         const Image bilinear_image = exact_renderer.render(with_program(ReliefSweepTwins::kExactReliefMapping));
+        if (const std::string e = sweep_twins.take_error(); !e.empty())
+            throw std::runtime_error("sweep relief: the exact image failed: " + e);
         const Image converged = backends.render(Backend::Cpu, with_setting(scene.frame, kConverged)).image;
         const std::string stem = out_dir + "/relief-sweep-" + short_number(angle) + "deg";
         write_png(stem + "-exact.png", ref_image);
@@ -264,7 +267,9 @@ int cmd_sweep_relief(const std::string& out_dir, int frames, const CommonOptions
         for (int round = 1; round < frames; ++round)
             for (size_t i = 0; i < all.size(); ++i)
                 results[i].ms.push_back(backends.render(Backend::Cpu, with_setting(scene.frame, all[i])).ms);
-        for (Result& r : results) r.median_ms = quantile(r.ms, 0.5);
+        // As the CSV will hold them, so that auto's mark below is what the
+        // build reading the CSV chooses (measured_costs.h).
+        for (Result& r : results) r.median_ms = measured_costs::as_written(quantile(r.ms, 0.5));
 
         // The setting quality: auto takes at this angle (budget 1), its
         // candidates ordered by the times just measured.

@@ -18,11 +18,20 @@
 // answer is exact up to double rounding.
 #pragma once
 
+#include <stdexcept>
 #include <vector>
 
 #include "frame/frame.h"
 
 namespace st::reference {
+
+// What the exact crossings throw for a ray too long to trace (too many
+// texel edges or staircase steps: a view along the surface), apart from
+// bad input: a caller may treat such a ray as meeting nothing.
+class RayTooLong : public std::invalid_argument {
+public:
+    using std::invalid_argument::invalid_argument;
+};
 
 class ReliefHeightField {
 public:
@@ -50,8 +59,9 @@ public:
         double height;  // the blended field there, height(level0, level1, f, u, v)
     };
     // The first crossing of the ray described above with the blended field.
-    // Throws std::invalid_argument for non-finite inputs, bad levels, f
-    // outside [0, 1], or a ray crossing more than 1e7 texel boundaries.
+    // Throws std::invalid_argument for non-finite inputs, bad levels or f
+    // outside [0, 1], RayTooLong for a ray crossing more than 1e7 texel
+    // boundaries.
     Crossing first_crossing(int level0, int level1, double f, double u0, double v0, double du,
                             double dv) const;
 

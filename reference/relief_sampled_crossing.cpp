@@ -105,14 +105,15 @@ SampledCrossing first_sampled_crossing(const ReliefHeightField& field, const std
     int pending = 0;
     const auto read_pending = [&] {
         heights(u.data(), v.data(), pending, read.data());
-        out.steps_read += pending;
-        if (out.steps_read > kMaxStepsRead)
-            throw std::invalid_argument(std::string(kWho) + ": the ray reads more than 2e6 steps of the staircase");
-        for (int i = 0; i < pending; ++i)
+        // Step by step, the limit too, so that the batch size changes nothing.
+        for (int i = 0; i < pending; ++i) {
+            if (++out.steps_read > kMaxStepsRead)
+                throw RayTooLong(std::string(kWho) + ": the ray reads more than 2e6 steps of the staircase");
             if (meet(step_lo[size_t(i)], step_hi[size_t(i)], double(read[size_t(i)]), &out.t)) {
                 out.hit = true;
                 return true;
             }
+        }
         pending = 0;
         return false;
     };
@@ -147,8 +148,10 @@ SampledCrossing first_sampled_crossing(const ReliefHeightField& field, const std
             const double mid = 0.5 * (t + end);
             step_lo[size_t(pending)] = t;
             step_hi[size_t(pending)] = end;
-            u[size_t(pending)] = u0 + mid * du;
-            v[size_t(pending)] = v0 + mid * dv;
+            // At the reduced coordinate the steps' edges were found from (the
+            // same texels under REPEAT, and a float keeps its precision).
+            u[size_t(pending)] = ur + mid * du;
+            v[size_t(pending)] = vr + mid * dv;
             if (++pending == batch && read_pending()) return out;
             t = end;
         }

@@ -44,7 +44,10 @@ struct SearchRay {
     double u0 = 0, v0 = 0, du = 0, dv = 0;  // at s: (u0 + s du, v0 + s dv)
     double a = 1, dh = -1, side = 1;        // height a + dh s; side as above
     // The ray starts where it just crossed (the next segment of a path
-    // through a surface): a touch at s = 0 is that crossing, not a new one.
+    // through a surface, a shadow ray from a hit): where it starts on the
+    // crossing side, that is the crossing it leaves, and the staircase step
+    // it starts in does not count; a crossing into that step from the near
+    // side does (relief_sampled_crossing.cpp, `meet`).
     bool leaving = false;
 };
 
@@ -56,9 +59,10 @@ struct SampledCrossing {
 
 // The first crossing of `ray` with the staircase of `levels` (the one or
 // two levels the read blends) of `field`, heights read through `heights`
-// in batches of `batch`. Throws std::invalid_argument for non-finite input,
-// a side other than +-1, no or bad levels, a batch under 1, a ray crossing
-// more than 1e7 texel boundaries, or one that reads more than 2e6 steps.
+// in batches of `batch` (which changes nothing but the calls). Throws
+// std::invalid_argument for non-finite input, a side other than +-1, no or
+// bad levels or a batch under 1; RayTooLong for a ray crossing more than
+// 1e7 texel boundaries or reading more than 2e6 steps.
 SampledCrossing first_sampled_crossing(const ReliefHeightField& field, const std::vector<int>& levels,
                                        const SearchRay& ray, const SampledHeights& heights, int batch);
 

@@ -138,6 +138,11 @@ TEST(ReliefSampledCrossing, SegmentsFromEitherSide) {
         };
         const SampledCrossing c = first_sampled_crossing(field, {1, 2}, r, read, kLanes);
         SCOPED_TRACE(testing::Message() << "segment " << n << " t " << c.t << " hit " << c.hit);
+        // The batch changes the calls only.
+        const SampledCrossing one = first_sampled_crossing(field, {1, 2}, r, read, 1);
+        EXPECT_EQ(one.t, c.t);
+        EXPECT_EQ(one.hit, c.hit);
+        EXPECT_EQ(one.steps_read, c.steps_read);
         constexpr int kScan = 100000;
         // (Float coordinates move a step's edges by up to ~3e-7 in s here.)
         const double stop = c.hit ? c.t - 2e-6 : 1.0;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iomanip>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -166,8 +167,14 @@ std::string fingerprint() {
     for (const char* text : {data::kReliefSweep, data::kThinSlabSpeed})
         for (const char* p = text; *p; ++p) h = (h ^ uint8_t(*p)) * 1099511628211ull;
     std::ostringstream s;
-    s << std::hex << h;
+    s << std::hex << std::setw(16) << std::setfill('0') << h;
     return s.str();
+}
+
+double as_written(double ms) {
+    std::ostringstream s;
+    s << ms;  // the CSVs' default stream format
+    return std::stod(s.str());
 }
 
 }  // namespace st::measured_costs

@@ -32,10 +32,14 @@ double relief_search_ms(const ReliefSetting& setting, double angle_deg);
 // lacks the variant.
 double thin_slab_variant_ms(const std::string& variant, double quads);
 
-// What the tables were measured with (their "# made by" lines) and a hash
-// of their contents, for records and cache keys.
+// What the tables were measured with (their "# made by" lines, for the
+// records) and a hash of their contents (for the cache keys).
 std::string provenance();
 std::string fingerprint();
+
+// A time as the sweeps write it to their CSVs (six significant digits): a
+// sweep orders auto's candidates by these, as the build will.
+double as_written(double ms);
 
 // The parsers behind the above, for tests: rows of (angle, linear steps,
 // min linear steps, binary steps, secant, ms) and of (light path, columns,

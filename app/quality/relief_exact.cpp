@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -21,23 +22,36 @@ namespace {
 // the search's error (and, on the bilinear surface, the 8-bit filter's
 // rounding of the surface). Inactive lanes and lanes with a non-finite ray
 // (helper lanes outside the triangle) keep s = 1 and no hit, as does a ray
-// too long to trace (over 1e7 texel edges, or 2e6 steps of the staircase
-// read: a view along the surface), which the reference throws for.
+// too long to trace (reference::RayTooLong: a view along the surface).
+// Anything else a lane meets runs on a worker thread, where it cannot be
+// thrown: the lane keeps no hit and the error goes to `errors`, which the
+// caller checks after the render (ReliefSweepTwins::take_error).
 class ExactReliefIntersector final : public ReliefIntersector {
 public:
     enum class Surface { Bilinear, Sampled };
-    explicit ExactReliefIntersector(Surface surface) : surface_(surface) {}
+    ExactReliefIntersector(Surface surface, std::shared_ptr<ReliefSweepTwins::Errors> errors)
+        : surface_(surface), errors_(std::move(errors)) {}
 
     // The renderer makes a twin (and so an intersector) per prepared draw and
-    // binds it once: the fields are built here, one for each map bound.
+    // binds it before any fragment: the fields are built here, one for each
+    // map bound (a map is known by its texture and its texels).
     void bind(const Sampler2D& map) override {
-        for (const auto& f : fields_)
-            if (f.first == &map.texture()) return;
-        fields_.emplace_back(&map.texture(), std::make_unique<reference::ReliefHeightField>(map.texture()));
+        for (const Field& f : fields_)
+            if (f.texture == &map.texture() && f.texels == map.texture().texels8.data()) return;
+        fields_.push_back({&map.texture(), map.texture().texels8.data(),
+                           std::make_unique<reference::ReliefHeightField>(map.texture())});
     }
     Float first_crossing(const Sampler2D& map, const Vec2& uv, const Vec2& offset, Float a, Float dh, Float side,
                          const Vec2& dx, const Vec2& dy, Mask leaving, Mask active, Mask& hit) const override {
-        const reference::ReliefHeightField& field = field_of(map);
+        const reference::ReliefHeightField* bound = nullptr;
+        try {
+            bound = &field_of(map);
+        } catch (const std::exception& e) {
+            errors_->note(e.what());
+            hit = Mask(false);
+            return Float(1.0f);
+        }
+        const reference::ReliefHeightField& field = *bound;
         const texel::LevelChoice c = map.grad_levels(dx, dy);
         const bool mipped = !map.texture().mips.empty();  // else c is unused: level 0
         Float t(1.0f);
@@ -61,8 +75,10 @@ public:
                     t.set(lane, float(x.t));
                     hits.set(lane, x.hit ? -1 : 0);
                 }
-            } catch (const std::invalid_argument&) {
-                // too long a ray (above): no crossing
+            } catch (const reference::RayTooLong&) {
+                // no crossing (above)
+            } catch (const std::exception& e) {
+                errors_->note(e.what());
             }
         }
         hit = hits != Int(0);
@@ -70,12 +86,18 @@ public:
     }
 
 private:
+    struct Field {
+        const Texture* texture;
+        const uint8_t* texels;
+        std::unique_ptr<reference::ReliefHeightField> field;
+    };
     Surface surface_;
-    std::vector<std::pair<const Texture*, std::unique_ptr<reference::ReliefHeightField>>> fields_;
+    std::shared_ptr<ReliefSweepTwins::Errors> errors_;
+    std::vector<Field> fields_;
 
     const reference::ReliefHeightField& field_of(const Sampler2D& map) const {
-        for (const auto& f : fields_)
-            if (f.first == &map.texture()) return *f.second;
+        for (const Field& f : fields_)
+            if (f.texture == &map.texture() && f.texels == map.texture().texels8.data()) return *f.field;
         throw std::logic_error("ExactReliefIntersector: a map that was not bound");
     }
 
@@ -109,20 +131,36 @@ private:
 
 }  // namespace
 
-ReliefSweepTwins::ReliefSweepTwins()
+void ReliefSweepTwins::Errors::note(const std::string& what) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (first_.empty()) first_ = what;
+}
+
+std::string ReliefSweepTwins::Errors::take() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return std::exchange(first_, std::string());
+}
+
+ReliefSweepTwins::ReliefSweepTwins() : ReliefSweepTwins(std::make_shared<Errors>()) {}
+
+ReliefSweepTwins::ReliefSweepTwins(std::shared_ptr<Errors> errors)
     : TwinsWithFragment({{kExactReliefMapping,
-                          [] {
+                          [errors] {
                               return std::make_unique<ReliefMappingFragment>(std::make_shared<ExactReliefIntersector>(
-                                  ExactReliefIntersector::Surface::Bilinear));
+                                  ExactReliefIntersector::Surface::Bilinear, errors));
                           }},
                          {kSampledReliefMapping,
-                          [] {
+                          [errors] {
                               return std::make_unique<ReliefMappingFragment>(std::make_shared<ExactReliefIntersector>(
-                                  ExactReliefIntersector::Surface::Sampled));
+                                  ExactReliefIntersector::Surface::Sampled, errors));
                           }},
-                         {kSampledTwoLayer, [] {
+                         {kSampledTwoLayer,
+                          [errors] {
                               return std::make_unique<TwoLayerFragment>(std::make_shared<ExactReliefIntersector>(
-                                  ExactReliefIntersector::Surface::Sampled));
-                          }}}) {}
+                                  ExactReliefIntersector::Surface::Sampled, errors));
+                          }}}),
+      errors_(std::move(errors)) {}
+
+std::string ReliefSweepTwins::take_error() const { return errors_->take(); }
 
 }  // namespace st

@@ -19,6 +19,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <string>
 
 #include "app/quality/twins_with_fragment.h"
@@ -32,6 +33,26 @@ public:
     static constexpr const char* kSampledTwoLayer = "two_layer_sampled_exact";
 
     ReliefSweepTwins();
+
+    // The first error an exact crossing met since the last call, or empty.
+    // They run on the renderer's worker threads, which cannot throw: the
+    // lane keeps no crossing, and whoever rendered an exact frame calls this
+    // after it and throws what it returns.
+    std::string take_error() const;
+
+    class Errors {
+    public:
+        void note(const std::string& what);
+        std::string take();
+
+    private:
+        std::mutex mutex_;
+        std::string first_;
+    };
+
+private:
+    explicit ReliefSweepTwins(std::shared_ptr<Errors> errors);
+    std::shared_ptr<Errors> errors_;
 };
 
 }  // namespace st

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 #include <tuple>
 
 #include "app/quality/measured_costs.h"
@@ -63,7 +64,7 @@ std::vector<ReliefSetting> relief_search_settings(const std::string& technique) 
                 s.linear_steps = hi, s.min_linear_steps = lo, s.binary_steps = binary;
                 out.push_back(s);
             }
-    out.push_back(ReliefSetting{});  // the most accurate, last
+    out.push_back(ReliefSetting{});  // the most accurate
     return out;
 }
 
@@ -100,7 +101,7 @@ nlohmann::json with_relief_setting(const nlohmann::json& document, const ReliefS
     return d;
 }
 
-ReliefQualityChoice measure_relief_quality(const TwinLibrary& twins, int threads, const std::string& name,
+ReliefQualityChoice measure_relief_quality(const ReliefSweepTwins& twins, int threads, const std::string& name,
                                            const nlohmann::json& document, int frames, const ReliefCost& cost) {
     ReliefQualityChoice choice;
     choice.scene = name;
@@ -133,6 +134,8 @@ ReliefQualityChoice measure_relief_quality(const TwinLibrary& twins, int threads
     const Image reference = renderer.render(choice.technique == "relief"
                                                 ? with_program("relief_mapping", ReliefSweepTwins::kSampledReliefMapping)
                                                 : with_program("two_layer", ReliefSweepTwins::kSampledTwoLayer));
+    if (const std::string e = twins.take_error(); !e.empty())
+        throw std::runtime_error("quality auto: " + name + ": the exact image failed: " + e);
     choice.reference = "the exact crossings of the height maps as the sampler reads them";
     choice.most_accurate_error = object_error(most_accurate_image, reference, choice.budget);
     const auto try_setting = [&](ReliefCandidate c) {
@@ -170,6 +173,8 @@ ReliefQualityChoice measure_relief_quality(const TwinLibrary& twins, int threads
         // The floor no search passes: both against the bilinear surface's
         // crossing in exact arithmetic.
         const Image bilinear = renderer.render(with_program("relief_mapping", ReliefSweepTwins::kExactReliefMapping));
+        if (const std::string e = twins.take_error(); !e.empty())
+            throw std::runtime_error("quality auto: " + name + ": the bilinear exact image failed: " + e);
         choice.exact_chosen = object_error(renderer.render(chosen.frame), bilinear, choice.budget);
         choice.exact_most_accurate = object_error(most_accurate_image, bilinear, choice.budget);
         choice.have_exact = true;
@@ -214,6 +219,7 @@ nlohmann::json relief_choice_record(const ReliefQualityChoice& choice) {
     r["candidates_tried"] = choice.tried.size();
     r["order"] = "sweep relief's frame times at " + std::to_string(int(std::lround(choice.angle_deg))) +
                  " degrees (docs/relief-sweep/)";
+    r["costs_measured_by"] = measured_costs::provenance();
     if (choice.chosen >= 0) r["sweep_ms"] = choice.tried[size_t(choice.chosen)].cost;
     r["cpu_ms"] = choice.chosen_ms;
     r["most_accurate_cpu_ms"] = choice.most_accurate_ms;

@@ -17,7 +17,8 @@
 //
 // The choice, one knob at a time, each step checked against the reference
 // on the whole image:
-// 1. the search: candidates (relief_search_settings) cheapest first, the
+// 1. the search: candidates (relief_search_settings, the most accurate
+//    among them, the slowest in every measured order) cheapest first, the
 //    first within the budget wins, the other knobs at their most accurate.
 //    Cheapest by the frame time `sweep relief` measured for the setting at
 //    the scene's view angle (measured_costs.h: relief mapping's scene, for
@@ -27,9 +28,9 @@
 // 3. the fewest light crossings, 1, 2, 4 or 8, within the budget
 //    (occlusion and absorption).
 // Errors decide, never a timing, so a scene always resolves the same way.
-// The most accurate setting (512 / 16 / secant) is the last candidate:
-// where only it meets the budget it is chosen; where not even it does, it
-// is used anyway, and the resolver says so in one line.
+// The most accurate setting (512 / 16 / secant) is a candidate: where only
+// it meets the budget it is chosen; where not even it does, it is used
+// anyway, and the resolver says so in one line.
 #pragma once
 
 #include <functional>
@@ -43,7 +44,7 @@
 
 namespace st {
 
-class TwinLibrary;
+class ReliefSweepTwins;
 
 struct ReliefSetting {
     int linear_steps = 512, min_linear_steps = 0, binary_steps = 16;
@@ -60,7 +61,7 @@ struct ReliefCandidate {
 };
 
 // Every search setting auto may choose for a row (`technique`), the most
-// accurate (ReliefSetting{}) last; `sweep relief` times them all.
+// accurate (ReliefSetting{}) among them; `sweep relief` times them all.
 std::vector<ReliefSetting> relief_search_settings(const std::string& technique);
 
 // What orders the search candidates: a setting's frame time at a view angle.
@@ -86,13 +87,12 @@ struct ReliefQualityChoice {
 // InputError for a bad "quality" or "quality_budget".
 double relief_quality_budget(const nlohmann::json& document);
 
-// Renders a relief scene's candidates on the CPU with `twins` (which must
-// hold ReliefSweepTwins' exact program, for the record's comparison with
-// the exact image), `frames` timed frames for the chosen and the most
+// Renders a relief scene's candidates and its exact images on the CPU with
+// `twins`, `frames` timed frames for the chosen and the most
 // accurate setting; `cost` orders the candidates (the sweep passes the times
 // it has just measured).
 ReliefQualityChoice measure_relief_quality(
-    const TwinLibrary& twins, int threads, const std::string& name, const nlohmann::json& document, int frames,
+    const ReliefSweepTwins& twins, int threads, const std::string& name, const nlohmann::json& document, int frames,
     const ReliefCost& cost = [](const ReliefSetting& s, double angle) { return measured_costs::relief_search_ms(s, angle); });
 
 // The document with the setting written in and no "quality" fields.

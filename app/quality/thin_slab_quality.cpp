@@ -82,6 +82,7 @@ nlohmann::json thin_slab_choice_record(const ThinSlabQualityChoice& choice) {
                         {"candidates_tried", choice.tried.size()},
                         {"order", "sweep thin-slab's frame times at the nearest mesh to " +
                                       std::to_string(choice.quads) + " quads (docs/thin-slab-speed/)"},
+                        {"costs_measured_by", measured_costs::provenance()},
                         {"cpu_ms", choice.chosen_ms},
                         {"most_accurate_cpu_ms", choice.most_accurate_ms}};
     nlohmann::json tried = nlohmann::json::array();

@@ -61,8 +61,8 @@ Vec3 TwoLayerFragment::light_occlusion(Exec& exec, const Vec2& uv, Float z, cons
     const Vec2 offset = Vec2(l.x, l.y) * total;
     const Float a = glsl::min(Float(1.0f) - z / Float(depth_) + Float(shadow_bias_), Float(1.0f));
     Mask blocked;
-    if (exact_)
-        trace(exec, *u_.relief_map, uv, offset, a, Float(1.0f) - a, Float(1.0f), dx, dy, false, blocked);
+    if (exact_)  // from the hit, which segment_blocked never tests (s = 0): leaving it
+        trace(exec, *u_.relief_map, uv, offset, a, Float(1.0f) - a, Float(1.0f), dx, dy, false, blocked, Mask(true));
     else
         blocked = relief::segment_blocked(exec, *u_.relief_map, uv, offset, a, Float(1.0f) - a, dx, dy, linear_steps_);
     const Float a_liquid = Float(1.0f) - z / Float(liquid_depth_);
